@@ -1,0 +1,57 @@
+// Factor once, solve many times: the kernel of interactive editing (Section 8).
+//
+// Backends: CHOLMOD's supernodal Cholesky through Eigen's CholmodSupport, which uses BLAS
+// threads for the dense supernodes, and Eigen's own SimplicialLDLT as the dependency-free
+// fallback.
+#ifndef LaplacianEditing_SparseCholesky_h
+#define LaplacianEditing_SparseCholesky_h
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+#include <string>
+
+namespace LaplacianEditing
+{
+enum class SolverBackend
+{
+  Cholmod,
+  SimplicialLDLT
+};
+
+class SparseCholesky
+{
+public:
+  SparseCholesky();
+  ~SparseCholesky();
+  SparseCholesky(SparseCholesky&&) noexcept;
+  SparseCholesky& operator=(SparseCholesky&&) noexcept;
+
+  /// Whether the backend was compiled in.
+  static bool IsAvailable(SolverBackend backend);
+
+  /// Factors a symmetric positive definite matrix (its lower triangle is read).
+  /// Returns an error message, empty on success.
+  std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend);
+
+  /// Solves for every column of `rhs` with the current factor.
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const;
+
+  bool IsFactorized() const;
+
+  /// Seconds spent in the symbolic analysis (ordering) and the numeric factorization.
+  double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
+  double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
+
+  /// The factor of one backend (defined in the .cxx).
+  struct Backend;
+
+private:
+  std::unique_ptr<Backend> Impl;
+  double AnalysisSeconds = 0.0;
+  double FactorizationSeconds = 0.0;
+};
+}
+
+#endif

@@ -1,0 +1,147 @@
+#include "SurfaceMesh.h"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+namespace LaplacianEditing
+{
+namespace
+{
+// Converts (item, key) pairs into compressed rows indexed by key.
+void BuildCompressedRows(int numberOfRows, std::vector<std::pair<int, int>>& keyedItems,
+  std::vector<int>& offsets, std::vector<int>& items)
+{
+  std::sort(keyedItems.begin(), keyedItems.end());
+  keyedItems.erase(std::unique(keyedItems.begin(), keyedItems.end()), keyedItems.end());
+  offsets.assign(numberOfRows + 1, 0);
+  items.resize(keyedItems.size());
+  for (std::size_t i = 0; i < keyedItems.size(); ++i)
+  {
+    ++offsets[keyedItems[i].first + 1];
+    items[i] = keyedItems[i].second;
+  }
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+}
+}
+
+SurfaceMesh SurfaceMesh::FromPolygons(const std::vector<Vector3>& points,
+  const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& connectivity,
+  bool mergeCoincidentPoints)
+{
+  SurfaceMesh mesh;
+  const int numberOfPoints = static_cast<int>(points.size());
+  mesh.VertexOfPoint.resize(numberOfPoints);
+  if (mergeCoincidentPoints)
+  {
+    std::vector<int> order(numberOfPoints);
+    std::iota(order.begin(), order.end(), 0);
+    auto lexicographic = [&points](int a, int b) {
+      return std::lexicographical_compare(
+        points[a].data(), points[a].data() + 3, points[b].data(), points[b].data() + 3);
+    };
+    std::sort(order.begin(), order.end(), lexicographic);
+    for (std::size_t i = 0; i < order.size(); ++i)
+    {
+      if (i == 0 || points[order[i]] != points[order[i - 1]])
+      {
+        mesh.Positions.push_back(points[order[i]]);
+      }
+      mesh.VertexOfPoint[order[i]] = static_cast<int>(mesh.Positions.size()) - 1;
+    }
+  }
+  else
+  {
+    mesh.Positions = points;
+    std::iota(mesh.VertexOfPoint.begin(), mesh.VertexOfPoint.end(), 0);
+  }
+
+  for (std::size_t cell = 0; cell + 1 < offsets.size(); ++cell)
+  {
+    const std::int64_t begin = offsets[cell];
+    const std::int64_t end = offsets[cell + 1];
+    for (std::int64_t corner = begin + 1; corner + 1 < end; ++corner)
+    {
+      const std::array<int, 3> triangle = { mesh.VertexOfPoint[connectivity[begin]],
+        mesh.VertexOfPoint[connectivity[corner]], mesh.VertexOfPoint[connectivity[corner + 1]] };
+      if (triangle[0] != triangle[1] && triangle[1] != triangle[2] && triangle[0] != triangle[2])
+      {
+        mesh.Triangles.push_back(triangle);
+      }
+    }
+  }
+  mesh.BuildAdjacency();
+  mesh.LabelComponents();
+  return mesh;
+}
+
+void SurfaceMesh::BuildAdjacency()
+{
+  std::vector<std::pair<int, int>> edges;
+  std::vector<std::pair<int, int>> incidences;
+  edges.reserve(6 * this->Triangles.size());
+  incidences.reserve(3 * this->Triangles.size());
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    const auto& tri = this->Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.emplace_back(tri[k], tri[(k + 1) % 3]);
+      edges.emplace_back(tri[(k + 1) % 3], tri[k]);
+      incidences.emplace_back(tri[k], static_cast<int>(t));
+    }
+  }
+  const int n = this->GetNumberOfVertices();
+  BuildCompressedRows(n, edges, this->NeighborOffsets, this->Neighbors);
+  BuildCompressedRows(n, incidences, this->TriangleOffsets, this->VertexTriangles);
+}
+
+void SurfaceMesh::LabelComponents()
+{
+  const int n = this->GetNumberOfVertices();
+  this->Components.assign(n, -1);
+  this->NumberOfComponents = 0;
+  std::vector<int> stack;
+  for (int seed = 0; seed < n; ++seed)
+  {
+    if (this->Components[seed] >= 0 || this->GetValence(seed) == 0)
+    {
+      continue;
+    }
+    const int label = this->NumberOfComponents++;
+    this->Components[seed] = label;
+    stack.assign(1, seed);
+    while (!stack.empty())
+    {
+      const int v = stack.back();
+      stack.pop_back();
+      for (const int* w = this->NeighborsBegin(v); w != this->NeighborsEnd(v); ++w)
+      {
+        if (this->Components[*w] < 0)
+        {
+          this->Components[*w] = label;
+          stack.push_back(*w);
+        }
+      }
+    }
+  }
+}
+
+int SurfaceMesh::FindNearestVertex(const Vector3& point) const
+{
+  int nearest = -1;
+  double nearestDistance = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < this->GetNumberOfVertices(); ++v)
+  {
+    const double distance = (this->Positions[v] - point).squaredNorm();
+    if (this->GetValence(v) > 0 && distance < nearestDistance)
+    {
+      nearest = v;
+      nearestDistance = distance;
+    }
+  }
+  return nearest;
+}
+
+}

@@ -1,0 +1,507 @@
+#include "vtkLaplacianDeformationFilter.h"
+
+#include "Numerics/DeformationSystem.h"
+#include "Numerics/EditRegion.h"
+#include "Numerics/SurfaceMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLinearTransform.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace le = LaplacianEditing;
+
+vtkStandardNewMacro(vtkLaplacianDeformationFilter);
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+bool IsIntegerType(int type)
+{
+  switch (type)
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_ID_TYPE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// Area-weighted vertex normals of the surface mesh at the given vertex positions.
+std::vector<le::Vector3> ComputeVertexNormals(
+  const le::SurfaceMesh& mesh, const std::vector<le::Vector3>& positions)
+{
+  std::vector<le::Vector3> normals(positions.size(), le::Vector3::Zero());
+  for (const auto& tri : mesh.GetTriangles())
+  {
+    const le::Vector3 n =
+      (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
+    for (int v : tri)
+    {
+      normals[v] += n;
+    }
+  }
+  for (auto& n : normals)
+  {
+    n.normalize();
+  }
+  return normals;
+}
+
+// Replaces a normals array by a recomputed one of the same name and type, so that normals are
+// never stale after the points moved.
+template <typename NormalOf>
+void ReplaceNormals(vtkDataSetAttributes* attributes, vtkIdType count, NormalOf normalOf)
+{
+  vtkDataArray* stale = attributes->GetNormals();
+  if (!stale)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkDataArray> fresh = vtk::TakeSmartPointer(stale->NewInstance());
+  fresh->SetName(stale->GetName());
+  fresh->SetNumberOfComponents(3);
+  fresh->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const le::Vector3 n = normalOf(i);
+    fresh->SetTuple3(i, n[0], n[1], n[2]);
+  }
+  attributes->SetNormals(fresh);
+}
+}
+
+struct vtkLaplacianDeformationFilter::vtkInternals
+{
+  std::vector<vtkSmartPointer<vtkLinearTransform>> HandleTransforms;
+
+  // What the cached factorization was built from.
+  std::vector<double> CacheKey;
+  std::string CacheArrayName;
+
+  le::SurfaceMesh Mesh;
+  le::EditRegion Region;
+  le::DeformationSystem System;
+  std::vector<int> LocalOfVertex;
+  // The core works on coordinates centred on the input's bounding box and scaled to a unit
+  // diagonal, so that offset or tiny models keep their precision.
+  le::Vector3 Center = le::Vector3::Zero();
+  double Scale = 1.0;
+
+  le::Vector3 Normalize(const double p[3]) const
+  {
+    return (le::Vector3(p[0], p[1], p[2]) - this->Center) * this->Scale;
+  }
+  le::Vector3 Denormalize(const le::Vector3& p) const { return p / this->Scale + this->Center; }
+
+  void Invalidate()
+  {
+    this->CacheKey.clear();
+    this->Region = le::EditRegion();
+    this->System = le::DeformationSystem();
+  }
+};
+
+vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
+  : Internals(new vtkInternals)
+{
+  if (!IsCholmodAvailable())
+  {
+    this->Solver = SOLVER_SIMPLICIAL_LDLT;
+  }
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+vtkLaplacianDeformationFilter::~vtkLaplacianDeformationFilter() = default;
+
+bool vtkLaplacianDeformationFilter::IsCholmodAvailable()
+{
+  return le::SparseCholesky::IsAvailable(le::SolverBackend::Cholmod);
+}
+
+void vtkLaplacianDeformationFilter::SetHandleTransform(int group, vtkLinearTransform* transform)
+{
+  if (group < 0)
+  {
+    vtkErrorMacro(<< "handle group " << group << " is negative");
+    return;
+  }
+  auto& transforms = this->Internals->HandleTransforms;
+  if (group >= static_cast<int>(transforms.size()))
+  {
+    transforms.resize(group + 1);
+  }
+  if (transforms[group] != transform)
+  {
+    transforms[group] = transform;
+    this->Modified();
+  }
+}
+
+vtkLinearTransform* vtkLaplacianDeformationFilter::GetHandleTransform(int group)
+{
+  const auto& transforms = this->Internals->HandleTransforms;
+  return group >= 0 && group < static_cast<int>(transforms.size()) ? transforms[group].Get()
+                                                                    : nullptr;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfHandleTransforms()
+{
+  return static_cast<int>(this->Internals->HandleTransforms.size());
+}
+
+void vtkLaplacianDeformationFilter::RemoveAllHandleTransforms()
+{
+  if (!this->Internals->HandleTransforms.empty())
+  {
+    this->Internals->HandleTransforms.clear();
+    this->Modified();
+  }
+}
+
+vtkMTimeType vtkLaplacianDeformationFilter::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  for (const auto& transform : this->Internals->HandleTransforms)
+  {
+    if (transform)
+    {
+      time = std::max(time, transform->GetMTime());
+    }
+  }
+  return time;
+}
+
+int vtkLaplacianDeformationFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkInternals& internals = *this->Internals;
+  output->ShallowCopy(input);
+  this->NumberOfROIVertices = 0;
+  this->NumberOfHandleVertices = 0;
+  this->SetupTime = 0.0;
+  this->AnalysisTime = 0.0;
+  this->FactorizationTime = 0.0;
+  this->SolveTime = 0.0;
+
+  // On bad input: say what is wrong and pass the input through unchanged.
+  auto fail = [&](const std::string& message) {
+    vtkErrorMacro(<< message);
+    internals.Invalidate();
+    output->ShallowCopy(input);
+    return 1;
+  };
+
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  if (numberOfPoints == 0)
+  {
+    return fail("The input mesh is empty.");
+  }
+  if (input->GetNumberOfPolys() == 0)
+  {
+    return fail("The input has no polygons (only vertices, lines or strips): the filter edits "
+                "triangle surfaces.");
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    return fail("The input has triangle strips; run vtkTriangleFilter first.");
+  }
+  vtkPoints* inputPoints = input->GetPoints();
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const double* p = inputPoints->GetPoint(i);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return fail("Point " + std::to_string(i) + " has a NaN or infinite coordinate.");
+    }
+  }
+
+  vtkDataArray* selection = nullptr;
+  if (this->SelectionMode == SELECTION_ARRAY)
+  {
+    selection = this->GetInputArrayToProcess(0, inputVector);
+    if (!selection)
+    {
+      return fail("Selection mode is Array but the input has no such point array; name an "
+                  "integer point array with SetInputArrayToProcess.");
+    }
+    if (!IsIntegerType(selection->GetDataType()) || selection->GetNumberOfComponents() != 1)
+    {
+      return fail(std::string("The selection array '") +
+        (selection->GetName() ? selection->GetName() : "") +
+        "' must be an integer array with one component (0 fixed, 1 ROI, 2+ handle).");
+    }
+  }
+  else if (!(this->HandleRadius > 0.0) || !(this->ROIRadius > 0.0))
+  {
+    return fail("HandleRadius and ROIRadius must be positive.");
+  }
+
+  const std::vector<double> key = { static_cast<double>(input->GetMTime()),
+    static_cast<double>(this->SelectionMode), this->HandleCenter[0], this->HandleCenter[1],
+    this->HandleCenter[2], this->HandleRadius, this->ROIRadius, this->AnchorPadding,
+    this->HandleWeight, this->AnchorWeight, static_cast<double>(this->LaplacianWeights),
+    static_cast<double>(this->OperatorOrder), static_cast<double>(this->Solver),
+    static_cast<double>(this->MergeCoincidentPoints) };
+  const std::string arrayName = selection && selection->GetName() ? selection->GetName() : "";
+
+  if (key != internals.CacheKey || arrayName != internals.CacheArrayName)
+  {
+    const Clock::time_point start = Clock::now();
+    internals.Invalidate();
+    this->UpdateProgress(0.0);
+
+    double bounds[6];
+    input->GetBounds(bounds);
+    internals.Center = le::Vector3(
+      0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
+    const double diagonal = le::Vector3(
+      bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
+    if (!(diagonal > 0.0))
+    {
+      return fail("All input points coincide: there is no surface to edit.");
+    }
+    internals.Scale = 1.0 / diagonal;
+
+    std::vector<le::Vector3> points(numberOfPoints);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      points[i] = internals.Normalize(inputPoints->GetPoint(i));
+    }
+    std::vector<std::int64_t> offsets(1, 0);
+    std::vector<std::int64_t> connectivity;
+    auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      cells->GetCurrentCell(size, ids);
+      connectivity.insert(connectivity.end(), ids, ids + size);
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    }
+    internals.Mesh = le::SurfaceMesh::FromPolygons(
+      points, offsets, connectivity, this->MergeCoincidentPoints != 0);
+    if (internals.Mesh.GetNumberOfTriangles() == 0)
+    {
+      return fail("The input polygons are all degenerate: no triangle has three distinct "
+                  "corners.");
+    }
+    this->UpdateProgress(0.1);
+
+    std::string error;
+    const auto& vertexOfPoint = internals.Mesh.GetVertexOfPoint();
+    if (selection)
+    {
+      std::vector<int> labels(internals.Mesh.GetNumberOfVertices(), 0);
+      for (vtkIdType i = 0; i < numberOfPoints; ++i)
+      {
+        int& label = labels[vertexOfPoint[i]];
+        label = std::max(label, static_cast<int>(selection->GetComponent(i, 0)));
+      }
+      error = le::SelectLabeledRegion(internals.Mesh, labels, this->AnchorPadding, internals.Region);
+    }
+    else
+    {
+      const int centerVertex =
+        internals.Mesh.FindNearestVertex(internals.Normalize(this->HandleCenter));
+      error = le::SelectGeodesicRegion(internals.Mesh, centerVertex,
+        this->HandleRadius * internals.Scale, this->ROIRadius * internals.Scale,
+        this->AnchorPadding, internals.Region);
+    }
+    if (!error.empty())
+    {
+      return fail("Cannot select the region: " + error + ".");
+    }
+    this->UpdateProgress(0.3);
+    if (this->GetAbortExecute())
+    {
+      internals.Invalidate();
+      return 1;
+    }
+
+    le::DeformationOptions options;
+    options.Weights = this->LaplacianWeights == WEIGHTS_COTANGENT ? le::LaplacianWeights::Cotangent
+                                                                  : le::LaplacianWeights::Uniform;
+    options.Order = this->OperatorOrder;
+    options.HandleWeight = this->HandleWeight;
+    options.AnchorWeight = this->AnchorWeight;
+    options.Backend = this->Solver == SOLVER_CHOLMOD ? le::SolverBackend::Cholmod
+                                                     : le::SolverBackend::SimplicialLDLT;
+    error = internals.System.Build(internals.Mesh, internals.Region, options);
+    if (!error.empty())
+    {
+      return fail("Cannot factor the editing system: " + error + ".");
+    }
+    ++this->NumberOfFactorizations;
+    internals.LocalOfVertex.assign(internals.Mesh.GetNumberOfVertices(), -1);
+    for (int k = 0; k < internals.Region.GetNumberOfVertices(); ++k)
+    {
+      internals.LocalOfVertex[internals.Region.Vertices[k]] = k;
+    }
+    internals.CacheKey = key;
+    internals.CacheArrayName = arrayName;
+    this->SetupTime = SecondsSince(start);
+    this->AnalysisTime = internals.System.GetFactor().GetAnalysisSeconds();
+    this->FactorizationTime = internals.System.GetFactor().GetFactorizationSeconds();
+    this->UpdateProgress(0.9);
+  }
+
+  // Handle transforms, expressed in the normalized frame: x' = M x + t becomes
+  // x'_n = M x_n + s (M c + t - c).
+  const Clock::time_point solveStart = Clock::now();
+  std::vector<le::AffineMap> maps(internals.Region.NumberOfHandleGroups, le::AffineMap::Identity());
+  for (int g = 0; g < internals.Region.NumberOfHandleGroups; ++g)
+  {
+    vtkLinearTransform* transform = this->GetHandleTransform(g);
+    if (!transform)
+    {
+      continue;
+    }
+    transform->Update();
+    vtkMatrix4x4* m = transform->GetMatrix();
+    Eigen::Matrix3d linear;
+    Eigen::Vector3d translation;
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear(r, c) = m->GetElement(r, c);
+      }
+      translation[r] = m->GetElement(r, 3);
+    }
+    maps[g].leftCols<3>() = linear;
+    maps[g].col(3) =
+      internals.Scale * (linear * internals.Center + translation - internals.Center);
+  }
+  const le::Positions solution = internals.System.Solve(maps);
+  if (!solution.allFinite())
+  {
+    return fail("The solve produced non-finite coordinates; the handle transform may be "
+                "degenerate.");
+  }
+
+  // Write the moved ROI points; every other point keeps its input coordinates exactly.
+  vtkNew<vtkPoints> outputPoints;
+  outputPoints->SetDataType(inputPoints->GetDataType());
+  outputPoints->DeepCopy(inputPoints);
+  const auto& vertexOfPoint = internals.Mesh.GetVertexOfPoint();
+  std::vector<le::Vector3> moved = internals.Mesh.GetPositions();
+  for (int k = 0; k < solution.rows(); ++k)
+  {
+    moved[internals.Region.Vertices[k]] = solution.row(k).transpose();
+  }
+  vtkNew<vtkUnsignedCharArray> roles;
+  roles->SetName("EditRole");
+  roles->SetNumberOfTuples(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const int k = internals.LocalOfVertex[vertexOfPoint[i]];
+    if (k >= 0)
+    {
+      const le::Vector3 p = internals.Denormalize(solution.row(k).transpose());
+      outputPoints->SetPoint(i, p.data());
+    }
+    roles->SetValue(i,
+      static_cast<unsigned char>(k >= 0 ? internals.Region.Roles[k] : le::VertexRole::Fixed));
+  }
+  output->SetPoints(outputPoints);
+  this->SolveTime = SecondsSince(solveStart);
+
+  const std::vector<le::Vector3> vertexNormals = ComputeVertexNormals(internals.Mesh, moved);
+  ReplaceNormals(output->GetPointData(), numberOfPoints,
+    [&](vtkIdType i) { return vertexNormals[vertexOfPoint[i]]; });
+  if (output->GetCellData()->GetNormals())
+  {
+    // Polygon normals from the same fan triangulation as the operator (verts and lines first).
+    const vtkIdType firstPoly = output->GetNumberOfVerts() + output->GetNumberOfLines();
+    std::vector<le::Vector3> cellNormals(output->GetNumberOfCells(), le::Vector3::Zero());
+    auto cells = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
+    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      cells->GetCurrentCell(size, ids);
+      le::Vector3& n = cellNormals[firstPoly + cells->GetCurrentCellId()];
+      for (vtkIdType c = 1; c + 1 < size; ++c)
+      {
+        n += (moved[vertexOfPoint[ids[c]]] - moved[vertexOfPoint[ids[0]]])
+               .cross(moved[vertexOfPoint[ids[c + 1]]] - moved[vertexOfPoint[ids[0]]]);
+      }
+      n.normalize();
+    }
+    ReplaceNormals(output->GetCellData(), output->GetNumberOfCells(),
+      [&](vtkIdType i) { return cellNormals[i]; });
+  }
+  if (this->GenerateEditRoles)
+  {
+    output->GetPointData()->AddArray(roles);
+  }
+
+  this->NumberOfROIVertices = internals.Region.GetNumberOfVertices();
+  for (auto role : internals.Region.Roles)
+  {
+    this->NumberOfHandleVertices += role == le::VertexRole::Handle ? 1 : 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SelectionMode: " << this->SelectionMode << "\n";
+  os << indent << "HandleCenter: (" << this->HandleCenter[0] << ", " << this->HandleCenter[1]
+     << ", " << this->HandleCenter[2] << ")\n";
+  os << indent << "HandleRadius: " << this->HandleRadius << "\n";
+  os << indent << "ROIRadius: " << this->ROIRadius << "\n";
+  os << indent << "AnchorPadding: " << this->AnchorPadding << "\n";
+  os << indent << "HandleWeight: " << this->HandleWeight << "\n";
+  os << indent << "AnchorWeight: " << this->AnchorWeight << "\n";
+  os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
+  os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
+  os << indent << "RotationMode: " << this->RotationMode << "\n";
+  os << indent << "Solver: " << this->Solver << "\n";
+  os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
+  os << indent << "GenerateEditRoles: " << this->GenerateEditRoles << "\n";
+  os << indent << "NumberOfHandleTransforms: " << this->Internals->HandleTransforms.size() << "\n";
+  os << indent << "NumberOfFactorizations: " << this->NumberOfFactorizations << "\n";
+  os << indent << "NumberOfROIVertices: " << this->NumberOfROIVertices << "\n";
+}

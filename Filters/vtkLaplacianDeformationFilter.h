@@ -1,0 +1,257 @@
+/**
+ * @class   vtkLaplacianDeformationFilter
+ * @brief   detail-preserving mesh editing with differential (Laplacian) coordinates
+ *
+ * vtkLaplacianDeformationFilter moves a handle region of a triangle mesh and reconstructs the
+ * surrounding region of interest (ROI) from its differential coordinates, after Lipman,
+ * Sorkine, Alexa et al., "Laplacian Framework for Interactive Mesh Editing" (2005).
+ *
+ * The region is chosen either geodesically (the default: a handle of radius HandleRadius around
+ * the surface vertex nearest HandleCenter, and an ROI of radius ROIRadius around the same
+ * vertex, both measured along mesh edges) or from an integer point array selected with
+ * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name) whose values
+ * are 0 fixed, 1 ROI, 2 handle, and 3, 4, ... further handle groups. The outer AnchorPadding
+ * fraction of the ROI becomes stationary anchors, weighted in proportion to their distance from
+ * the handle. Each handle group follows its own vtkLinearTransform applied to its rest
+ * positions.
+ *
+ * The normal equations are factored once per region and reused while only handle transforms
+ * change: GetNumberOfFactorizations() counts them. Changing the input, the region, the weights,
+ * the order or the solver refactors.
+ *
+ * Input requirements: polygons (quads and other polygons are split into triangle fans for the
+ * operator; the output keeps the input's cells). Points that share a position are treated as
+ * one surface vertex (MergeCoincidentPoints, on by default), so texture seams and triangle soups
+ * edit as one surface. Points no polygon uses are never edited.
+ *
+ * Output: the input with moved points. All point and cell data pass through; point and cell
+ * normals are recomputed; the optional EditRole point array classifies each point as 0 fixed,
+ * 1 anchor, 2 free or 3 handle (the paper's Fig. 2). On bad input the filter reports an error
+ * and passes the input through unchanged.
+ */
+#ifndef vtkLaplacianDeformationFilter_h
+#define vtkLaplacianDeformationFilter_h
+
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkLinearTransform;
+
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLaplacianDeformationFilter* New();
+  vtkTypeMacro(vtkLaplacianDeformationFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum SelectionModes
+  {
+    SELECTION_GEODESIC = 0,
+    SELECTION_ARRAY = 1
+  };
+  enum LaplacianWeightTypes
+  {
+    WEIGHTS_UNIFORM = 0,
+    WEIGHTS_COTANGENT = 1
+  };
+  enum RotationModes
+  {
+    ROTATION_NONE = 0
+  };
+  enum Solvers
+  {
+    SOLVER_CHOLMOD = 0,
+    SOLVER_SIMPLICIAL_LDLT = 1
+  };
+  enum EditRoles
+  {
+    ROLE_FIXED = 0,
+    ROLE_ANCHOR = 1,
+    ROLE_FREE = 2,
+    ROLE_HANDLE = 3
+  };
+
+  ///@{
+  /**
+   * How the handle and the ROI are chosen. Default: geodesic.
+   */
+  vtkSetClampMacro(SelectionMode, int, SELECTION_GEODESIC, SELECTION_ARRAY);
+  vtkGetMacro(SelectionMode, int);
+  void SetSelectionModeToGeodesic() { this->SetSelectionMode(SELECTION_GEODESIC); }
+  void SetSelectionModeToArray() { this->SetSelectionMode(SELECTION_ARRAY); }
+  ///@}
+
+  ///@{
+  /**
+   * Geodesic selection: the handle is centred on the surface vertex nearest HandleCenter and
+   * holds the vertices within HandleRadius of it; the ROI holds those within ROIRadius.
+   * Distances are shortest paths along edges. Defaults: (0,0,0), 0.05 and 0.5.
+   */
+  vtkSetVector3Macro(HandleCenter, double);
+  vtkGetVector3Macro(HandleCenter, double);
+  vtkSetMacro(HandleRadius, double);
+  vtkGetMacro(HandleRadius, double);
+  vtkSetMacro(ROIRadius, double);
+  vtkGetMacro(ROIRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Fraction of the ROI radius, at its outer edge, whose vertices become stationary anchors.
+   * Default 0.1, the paper's choice.
+   */
+  vtkSetClampMacro(AnchorPadding, double, 0.0, 1.0);
+  vtkGetMacro(AnchorPadding, double);
+  ///@}
+
+  ///@{
+  /**
+   * Soft-constraint weights. Handles: default 100, so that handles land within a small
+   * fraction of a percent of their targets. Anchors: default 1 at the ROI's outer edge,
+   * proportional to the distance from the handle inside the padding.
+   */
+  vtkSetClampMacro(HandleWeight, double, 1e-3, 1e6);
+  vtkGetMacro(HandleWeight, double);
+  vtkSetClampMacro(AnchorWeight, double, 0.0, 1e6);
+  vtkGetMacro(AnchorWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * Weights of the Laplacian: uniform (the paper's umbrella operator, default) or cotangent
+   * (clamped for obtuse and degenerate triangles; see LaplacianOperator.h).
+   */
+  vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
+  vtkGetMacro(LaplacianWeights, int);
+  void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
+  void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
+  ///@}
+
+  ///@{
+  /**
+   * Order of the differential operator: 1 (Laplacian, default) or 2 (bi-Laplacian, smoother
+   * transitions at the anchors).
+   */
+  vtkSetClampMacro(OperatorOrder, int, 1, 2);
+  vtkGetMacro(OperatorOrder, int);
+  ///@}
+
+  ///@{
+  /**
+   * How the differential coordinates follow local rotations. Only none for now.
+   */
+  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_NONE);
+  vtkGetMacro(RotationMode, int);
+  void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
+  ///@}
+
+  ///@{
+  /**
+   * Sparse Cholesky backend: CHOLMOD supernodal (default where built in) or Eigen's
+   * SimplicialLDLT.
+   */
+  vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_SIMPLICIAL_LDLT);
+  vtkGetMacro(Solver, int);
+  void SetSolverToCholmod() { this->SetSolver(SOLVER_CHOLMOD); }
+  void SetSolverToSimplicialLDLT() { this->SetSolver(SOLVER_SIMPLICIAL_LDLT); }
+  static bool IsCholmodAvailable();
+  ///@}
+
+  ///@{
+  /**
+   * Treat input points at the same position as one surface vertex. Default on.
+   */
+  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Add the EditRole point array (0 fixed, 1 anchor, 2 free, 3 handle). Default on.
+   */
+  vtkSetMacro(GenerateEditRoles, vtkTypeBool);
+  vtkGetMacro(GenerateEditRoles, vtkTypeBool);
+  vtkBooleanMacro(GenerateEditRoles, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * The transform of handle group 0, applied to the handle's rest positions. nullptr means
+   * identity. The filter's MTime includes the transforms' MTimes.
+   */
+  void SetHandleTransform(vtkLinearTransform* transform) { this->SetHandleTransform(0, transform); }
+  vtkLinearTransform* GetHandleTransform() { return this->GetHandleTransform(0); }
+  ///@}
+
+  ///@{
+  /**
+   * The transform of handle group `group` (array value 2 + group).
+   */
+  void SetHandleTransform(int group, vtkLinearTransform* transform);
+  vtkLinearTransform* GetHandleTransform(int group);
+  int GetNumberOfHandleTransforms();
+  void RemoveAllHandleTransforms();
+  ///@}
+
+  /**
+   * Numeric factorizations since construction.
+   */
+  vtkGetMacro(NumberOfFactorizations, int);
+
+  ///@{
+  /**
+   * Facts of the last update: ROI and handle sizes; seconds spent on the whole setup (region
+   * selection, assembly, analysis and factorization; 0 when the cached factor was reused), on
+   * the sparse ordering analysis and on the numeric factorization alone; and seconds spent
+   * solving and writing the output for the current handle transforms.
+   */
+  vtkGetMacro(NumberOfROIVertices, int);
+  vtkGetMacro(NumberOfHandleVertices, int);
+  vtkGetMacro(SetupTime, double);
+  vtkGetMacro(AnalysisTime, double);
+  vtkGetMacro(FactorizationTime, double);
+  vtkGetMacro(SolveTime, double);
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLaplacianDeformationFilter();
+  ~vtkLaplacianDeformationFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int SelectionMode = SELECTION_GEODESIC;
+  double HandleCenter[3] = { 0.0, 0.0, 0.0 };
+  double HandleRadius = 0.05;
+  double ROIRadius = 0.5;
+  double AnchorPadding = 0.1;
+  double HandleWeight = 100.0;
+  double AnchorWeight = 1.0;
+  int LaplacianWeights = WEIGHTS_UNIFORM;
+  int OperatorOrder = 1;
+  int RotationMode = ROTATION_NONE;
+  int Solver = SOLVER_CHOLMOD;
+  vtkTypeBool MergeCoincidentPoints = 1;
+  vtkTypeBool GenerateEditRoles = 1;
+
+  int NumberOfFactorizations = 0;
+  int NumberOfROIVertices = 0;
+  int NumberOfHandleVertices = 0;
+  double SetupTime = 0.0;
+  double AnalysisTime = 0.0;
+  double FactorizationTime = 0.0;
+  double SolveTime = 0.0;
+
+private:
+  vtkLaplacianDeformationFilter(const vtkLaplacianDeformationFilter&) = delete;
+  void operator=(const vtkLaplacianDeformationFilter&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,635 @@
+// Tests of vtkLaplacianDeformationFilter: behaviour, caching, pass-through and bad input.
+#include "vtkBumpyPlaneSource.h"
+#include "vtkLaplacianDeformationFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <functional>
+#include <map>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace
+{
+const std::string DataDir = LAPLACIAN_EDITING_DATA_DIR;
+
+// Collects the filter's error messages instead of printing them.
+class ErrorCatcher
+{
+public:
+  explicit ErrorCatcher(vtkObject* object)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
+      static_cast<ErrorCatcher*>(self)->Messages += static_cast<const char*>(message);
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+  std::string Messages;
+
+private:
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+vtkSmartPointer<vtkPolyData> BumpyPlane(int resolution = 60)
+{
+  vtkNew<vtkBumpyPlaneSource> source;
+  source->SetResolution(resolution);
+  source->Update();
+  return source->GetOutput();
+}
+
+double Diagonal(vtkPolyData* mesh)
+{
+  return mesh->GetLength();
+}
+
+double MaxPointDistance(vtkPolyData* a, vtkPolyData* b)
+{
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+  }
+  return worst;
+}
+
+vtkSmartPointer<vtkLaplacianDeformationFilter> PlaneEdit(vtkPolyData* input)
+{
+  auto filter = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  filter->SetInputData(input);
+  filter->SetHandleCenter(0.5, 0.5, 0.0);
+  filter->SetHandleRadius(0.06);
+  filter->SetROIRadius(0.35);
+  return filter;
+}
+
+vtkSmartPointer<vtkTransform> Translation(double x, double y, double z)
+{
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->Translate(x, y, z);
+  return transform;
+}
+
+vtkUnsignedCharArray* Roles(vtkPolyData* output)
+{
+  return vtkUnsignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
+}
+}
+
+TEST(Filter, IdentityReproducesTheInput)
+{
+  auto input = BumpyPlane();
+  for (int order = 1; order <= 2; ++order)
+  {
+    for (int weights = 0; weights <= 1; ++weights)
+    {
+      auto filter = PlaneEdit(input);
+      filter->SetOperatorOrder(order);
+      filter->SetLaplacianWeights(weights);
+      filter->Update();
+      EXPECT_LT(MaxPointDistance(input, filter->GetOutput()), 1e-9 * Diagonal(input))
+        << "order " << order << " weights " << weights;
+      EXPECT_GT(filter->GetNumberOfROIVertices(), 0);
+    }
+  }
+}
+
+TEST(Filter, MovesHandleAndLeavesOutsideBitIdentical)
+{
+  auto input = BumpyPlane();
+  auto filter = PlaneEdit(input);
+  filter->SetHandleTransform(Translation(0.0, 0.05, 0.2));
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  vtkUnsignedCharArray* roles = Roles(output);
+  ASSERT_NE(roles, nullptr);
+  int handles = 0, fixed = 0, anchors = 0, free = 0;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    input->GetPoint(i, p);
+    output->GetPoint(i, q);
+    switch (roles->GetValue(i))
+    {
+      case vtkLaplacianDeformationFilter::ROLE_FIXED:
+        ++fixed;
+        ASSERT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "point " << i;
+        break;
+      case vtkLaplacianDeformationFilter::ROLE_HANDLE:
+        ++handles;
+        EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(
+                    q, std::array<double, 3>{ p[0], p[1] + 0.05, p[2] + 0.2 }.data())),
+          1e-3 * Diagonal(input));
+        break;
+      case vtkLaplacianDeformationFilter::ROLE_ANCHOR:
+        ++anchors;
+        break;
+      default:
+        ++free;
+    }
+  }
+  EXPECT_GT(handles, 0);
+  EXPECT_GT(fixed, 0);
+  EXPECT_GT(anchors, 0);
+  EXPECT_GT(free, 0);
+  EXPECT_EQ(handles, filter->GetNumberOfHandleVertices());
+  EXPECT_EQ(handles + anchors + free, filter->GetNumberOfROIVertices());
+}
+
+TEST(Filter, ReusesTheFactorizationWhileOnlyTheHandleMoves)
+{
+  auto input = BumpyPlane();
+  auto filter = PlaneEdit(input);
+  vtkNew<vtkTransform> transform;
+  filter->SetHandleTransform(transform);
+  filter->Update();
+  ASSERT_EQ(filter->GetNumberOfFactorizations(), 1);
+  double previousZ = 0.0;
+  for (int move = 1; move <= 5; ++move)
+  {
+    transform->Identity();
+    transform->Translate(0, 0, 0.04 * move);
+    transform->RotateZ(3.0 * move);
+    filter->Update();
+    double p[3];
+    filter->GetOutput()->GetPoint(40 * 61 + 30, p); // near the handle
+    EXPECT_GT(p[2], previousZ);
+    previousZ = p[2];
+  }
+  EXPECT_EQ(filter->GetNumberOfFactorizations(), 1);
+
+  // Everything that changes the matrix refactors.
+  int expected = 1;
+  auto expectRefactor = [&](const char* what) {
+    filter->Update();
+    EXPECT_EQ(filter->GetNumberOfFactorizations(), ++expected) << what;
+  };
+  filter->SetROIRadius(0.3);
+  expectRefactor("ROI radius");
+  filter->SetHandleCenter(0.4, 0.5, 0.0);
+  expectRefactor("handle centre");
+  filter->SetLaplacianWeightsToCotangent();
+  expectRefactor("weights");
+  filter->SetOperatorOrder(2);
+  expectRefactor("order");
+  input->GetPoints()->Modified();
+  expectRefactor("mesh");
+  filter->SetSolverToSimplicialLDLT();
+  expectRefactor("solver");
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfFactorizations(), expected) << "no change, no refactor";
+}
+
+TEST(Filter, SolversAgree)
+{
+  if (!vtkLaplacianDeformationFilter::IsCholmodAvailable())
+  {
+    GTEST_SKIP() << "built without CHOLMOD";
+  }
+  auto input = BumpyPlane();
+  vtkSmartPointer<vtkPolyData> results[2];
+  for (int solver = 0; solver <= 1; ++solver)
+  {
+    auto filter = PlaneEdit(input);
+    filter->SetSolver(solver);
+    filter->SetOperatorOrder(2);
+    filter->SetHandleTransform(Translation(0.1, 0, 0.2));
+    filter->Update();
+    results[solver] = filter->GetOutput();
+  }
+  EXPECT_LT(MaxPointDistance(results[0], results[1]), 1e-8 * Diagonal(input));
+}
+
+TEST(Filter, PassesDataThroughAndRecomputesNormals)
+{
+  auto input = BumpyPlane();
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(input);
+  normals->SplittingOff();
+  normals->ComputeCellNormalsOn();
+  normals->Update();
+  vtkNew<vtkPolyData> withData;
+  withData->DeepCopy(normals->GetOutput());
+  vtkNew<vtkIntArray> pointIds;
+  pointIds->SetName("PointIds");
+  vtkNew<vtkDoubleArray> cellValues;
+  cellValues->SetName("CellValues");
+  for (vtkIdType i = 0; i < withData->GetNumberOfPoints(); ++i)
+  {
+    pointIds->InsertNextValue(static_cast<int>(i));
+  }
+  for (vtkIdType i = 0; i < withData->GetNumberOfCells(); ++i)
+  {
+    cellValues->InsertNextValue(0.5 * i);
+  }
+  withData->GetPointData()->AddArray(pointIds);
+  withData->GetCellData()->AddArray(cellValues);
+
+  auto filter = PlaneEdit(withData);
+  filter->SetHandleTransform(Translation(0, 0, 0.25));
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  EXPECT_EQ(output->GetNumberOfPoints(), withData->GetNumberOfPoints());
+  EXPECT_EQ(output->GetNumberOfCells(), withData->GetNumberOfCells());
+  EXPECT_EQ(output->GetPointData()->GetArray("PointIds"), pointIds.Get());
+  EXPECT_EQ(output->GetCellData()->GetArray("CellValues"), cellValues.Get());
+
+  // Normals follow the moved surface: compare with normals computed afresh on the output.
+  vtkNew<vtkPolyDataNormals> fresh;
+  vtkNew<vtkPolyData> bare;
+  bare->SetPoints(output->GetPoints());
+  bare->SetPolys(output->GetPolys());
+  fresh->SetInputData(bare);
+  fresh->SplittingOff();
+  fresh->ComputeCellNormalsOn();
+  fresh->Update();
+  for (auto [ours, reference] :
+    { std::make_pair(output->GetPointData()->GetNormals(), fresh->GetOutput()->GetPointData()->GetNormals()),
+      std::make_pair(output->GetCellData()->GetNormals(), fresh->GetOutput()->GetCellData()->GetNormals()) })
+  {
+    ASSERT_NE(ours, nullptr);
+    ASSERT_EQ(ours->GetNumberOfTuples(), reference->GetNumberOfTuples());
+    double worstAngle = 0.0;
+    for (vtkIdType i = 0; i < ours->GetNumberOfTuples(); ++i)
+    {
+      double a[3], b[3];
+      ours->GetTuple(i, a);
+      reference->GetTuple(i, b);
+      worstAngle = std::max(worstAngle, std::acos(std::min(1.0, vtkMath::Dot(a, b))));
+    }
+    // vtkPolyDataNormals weights faces differently; both agree to a few degrees.
+    EXPECT_LT(vtkMath::DegreesFromRadians(worstAngle), 5.0);
+  }
+}
+
+TEST(Filter, SelectsByArrayWithSeveralHandleGroups)
+{
+  auto input = BumpyPlane(40);
+  vtkNew<vtkIntArray> selection;
+  selection->SetName("Selection");
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    int label = (p[0] > 0.1 && p[0] < 0.9 && p[1] > 0.1 && p[1] < 0.9) ? 1 : 0;
+    if (std::abs(p[1] - 0.5) < 0.06 && std::abs(p[0] - 0.3) < 0.06)
+    {
+      label = 2;
+    }
+    if (std::abs(p[1] - 0.5) < 0.06 && std::abs(p[0] - 0.7) < 0.06)
+    {
+      label = 3;
+    }
+    selection->InsertNextValue(label);
+  }
+  input->GetPointData()->AddArray(selection);
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  filter->SetInputData(input);
+  filter->SetSelectionModeToArray();
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Selection");
+  filter->SetHandleTransform(0, Translation(0, 0, 0.2));
+  filter->SetHandleTransform(1, Translation(0, 0, -0.1));
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    input->GetPoint(i, p);
+    output->GetPoint(i, q);
+    const int label = selection->GetValue(i);
+    if (label == 0)
+    {
+      ASSERT_EQ(p[2], q[2]);
+    }
+    else if (label >= 2)
+    {
+      EXPECT_NEAR(q[2] - p[2], label == 2 ? 0.2 : -0.1, 1e-3 * Diagonal(input));
+    }
+  }
+  EXPECT_EQ(filter->GetNumberOfHandleTransforms(), 2);
+}
+
+TEST(Filter, EditsTheCactusFromItsSelAndDefFiles)
+{
+  // The Botsch & Sorkine benchmark format: OFF mesh, .sel roles, .def handle transform.
+  std::ifstream off(DataDir + "/cactus.off"), sel(DataDir + "/cactus.sel"),
+    def(DataDir + "/cactus.def");
+  ASSERT_TRUE(off && sel && def) << "missing cactus files in " << DataDir;
+  std::string header, line;
+  int nv, nf, ne;
+  off >> header >> nv >> nf >> ne;
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < nv; ++i)
+  {
+    double p[3];
+    off >> p[0] >> p[1] >> p[2];
+    std::getline(off, line); // colour
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < nf; ++i)
+  {
+    int n;
+    vtkIdType ids[3];
+    off >> n >> ids[0] >> ids[1] >> ids[2];
+    std::getline(off, line);
+    polys->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Selection");
+  while (std::getline(sel, line))
+  {
+    if (!line.empty() && line[0] != '#')
+    {
+      labels->InsertNextValue(std::stoi(line));
+    }
+  }
+  ASSERT_EQ(labels->GetNumberOfTuples(), nv);
+  vtkNew<vtkMatrix4x4> matrix;
+  std::getline(def, line);
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      double value;
+      def >> value;
+      matrix->SetElement(r, c, value);
+    }
+  }
+  vtkNew<vtkPolyData> cactus;
+  cactus->SetPoints(points);
+  cactus->SetPolys(polys);
+  cactus->GetPointData()->AddArray(labels);
+
+  vtkNew<vtkTransform> transform;
+  transform->SetMatrix(matrix);
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  filter->SetInputData(cactus);
+  filter->SetSelectionModeToArray();
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Selection");
+  filter->SetHandleTransform(transform);
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    double p[3], q[3], target[3];
+    cactus->GetPoint(i, p);
+    output->GetPoint(i, q);
+    if (labels->GetValue(i) == 0)
+    {
+      ASSERT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]);
+    }
+    else if (labels->GetValue(i) == 2)
+    {
+      transform->TransformPoint(p, target);
+      EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(q, target)), 1e-3 * Diagonal(cactus));
+    }
+  }
+}
+
+TEST(Filter, EditsAcrossTextureSeams)
+{
+  // spot.obj: 2,930 vertices read as 17,568 points split at texture seams. Coincident points
+  // must move together, so the edit leaves no crack.
+  vtkNew<vtkOBJReader> reader;
+  reader->SetFileName((DataDir + "/spot.obj").c_str());
+  reader->Update();
+  vtkPolyData* spot = reader->GetOutput();
+  ASSERT_GT(spot->GetNumberOfPoints(), 10000);
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  filter->SetInputData(spot);
+  double p[3];
+  spot->GetPoint(0, p);
+  filter->SetHandleCenter(p);
+  filter->SetHandleRadius(0.05 * spot->GetLength());
+  filter->SetROIRadius(0.3 * spot->GetLength());
+  filter->SetHandleTransform(Translation(0, 0.1 * spot->GetLength(), 0));
+  filter->Update();
+  vtkPolyData* output = filter->GetOutput();
+  EXPECT_GT(filter->GetNumberOfROIVertices(), 200);
+  // Group points by input position; each group must share one output position.
+  std::map<std::array<double, 3>, std::array<double, 3>> moved;
+  int groupsChecked = 0;
+  for (vtkIdType i = 0; i < spot->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> in, out;
+    spot->GetPoint(i, in.data());
+    output->GetPoint(i, out.data());
+    auto [it, inserted] = moved.emplace(in, out);
+    if (!inserted)
+    {
+      ASSERT_EQ(it->second, out) << "point " << i << " split from its seam twin";
+      ++groupsChecked;
+    }
+  }
+  EXPECT_GT(groupsChecked, 1000);
+}
+
+TEST(Filter, ReportsProgress)
+{
+  auto filter = PlaneEdit(BumpyPlane());
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetClientData(&progress);
+  callback->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    static_cast<std::vector<double>*>(data)->push_back(
+      static_cast<vtkAlgorithm*>(caller)->GetProgress());
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, callback);
+  filter->Update();
+  ASSERT_GE(progress.size(), 3u);
+  EXPECT_EQ(progress.back(), 1.0);
+}
+
+// Each bad input: a clear error, and the output is the input unchanged.
+struct BadInput
+{
+  const char* Name;
+  std::function<void(vtkPolyData*, vtkLaplacianDeformationFilter*)> Spoil;
+  const char* Message;
+};
+
+class FilterBadInput : public ::testing::TestWithParam<BadInput>
+{
+};
+
+TEST_P(FilterBadInput, ReportsAnErrorAndPassesTheInputThrough)
+{
+  const BadInput& bad = GetParam();
+  auto input = BumpyPlane(20);
+  auto filter = PlaneEdit(input);
+  bad.Spoil(input, filter);
+  filter->SetHandleTransform(Translation(0, 0, 0.3));
+  ErrorCatcher errors(filter);
+  filter->Update();
+  EXPECT_NE(errors.Messages.find(bad.Message), std::string::npos)
+    << bad.Name << ": got '" << errors.Messages << "'";
+  vtkPolyData* output = filter->GetOutput();
+  EXPECT_EQ(output->GetNumberOfPoints(), input->GetNumberOfPoints());
+  EXPECT_EQ(output->GetNumberOfCells(), input->GetNumberOfCells());
+  if (input->GetNumberOfPoints() > 0)
+  {
+    EXPECT_EQ(output->GetPoints()->GetData(), input->GetPoints()->GetData());
+  }
+}
+
+namespace
+{
+void AddSelection(vtkPolyData* input, vtkDataArray* array, vtkLaplacianDeformationFilter* filter)
+{
+  array->SetName("Selection");
+  array->SetNumberOfComponents(1);
+  array->SetNumberOfTuples(input->GetNumberOfPoints());
+  array->Fill(1);
+  input->GetPointData()->AddArray(array);
+  filter->SetSelectionModeToArray();
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Selection");
+}
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, FilterBadInput,
+  ::testing::Values(
+    BadInput{ "EmptyMesh", [](vtkPolyData* in, vtkLaplacianDeformationFilter*) { in->Initialize(); },
+      "empty" },
+    BadInput{ "LinesOnly",
+      [](vtkPolyData* in, vtkLaplacianDeformationFilter*) {
+        vtkNew<vtkCellArray> lines;
+        const vtkIdType ids[2] = { 0, 1 };
+        lines->InsertNextCell(2, ids);
+        in->SetPolys(nullptr);
+        in->SetLines(lines);
+      },
+      "no polygons" },
+    BadInput{ "NaNCoordinate",
+      [](vtkPolyData* in, vtkLaplacianDeformationFilter*) {
+        in->GetPoints()->SetPoint(7, std::nan(""), 0, 0);
+      },
+      "NaN or infinite" },
+    BadInput{ "InfiniteCoordinate",
+      [](vtkPolyData* in, vtkLaplacianDeformationFilter*) {
+        in->GetPoints()->SetPoint(7, 0, std::numeric_limits<double>::infinity(), 0);
+      },
+      "NaN or infinite" },
+    BadInput{ "ZeroRadius",
+      [](vtkPolyData*, vtkLaplacianDeformationFilter* f) { f->SetHandleRadius(0.0); },
+      "must be positive" },
+    BadInput{ "NegativeROIRadius",
+      [](vtkPolyData*, vtkLaplacianDeformationFilter* f) { f->SetROIRadius(-1.0); },
+      "must be positive" },
+    BadInput{ "HandleOutsideROI",
+      [](vtkPolyData*, vtkLaplacianDeformationFilter* f) {
+        f->SetHandleRadius(0.4);
+        f->SetROIRadius(0.3);
+      },
+      "handle reaches outside the region" },
+    BadInput{ "ROIWithoutAnchorOrFixedVertex",
+      [](vtkPolyData*, vtkLaplacianDeformationFilter* f) {
+        f->SetROIRadius(100.0);
+        f->SetAnchorPadding(0.0);
+      },
+      "no fixed vertex and no anchor" },
+    BadInput{ "MissingSelectionArray",
+      [](vtkPolyData*, vtkLaplacianDeformationFilter* f) {
+        f->SetSelectionModeToArray();
+        f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Nope");
+      },
+      "no such point array" },
+    BadInput{ "FloatSelectionArray",
+      [](vtkPolyData* in, vtkLaplacianDeformationFilter* f) {
+        vtkNew<vtkFloatArray> array;
+        AddSelection(in, array, f);
+      },
+      "must be an integer array" },
+    BadInput{ "NoHandle",
+      [](vtkPolyData* in, vtkLaplacianDeformationFilter* f) {
+        vtkNew<vtkIntArray> array;
+        AddSelection(in, array, f);
+        array->SetValue(0, 0);
+      },
+      "no handle vertex" },
+    BadInput{ "UnreferencedVertexInROI",
+      [](vtkPolyData* in, vtkLaplacianDeformationFilter* f) {
+        in->GetPoints()->InsertNextPoint(0.5, 0.5, 1.0);
+        vtkNew<vtkIntArray> array;
+        AddSelection(in, array, f);
+        array->SetValue(0, 2);
+        array->SetValue(1, 0);
+      },
+      "no triangle references" }),
+  [](const auto& info) { return std::string(info.param.Name); });
+
+TEST(Filter, IgnoresUnreferencedPointsOutsideTheROI)
+{
+  auto input = BumpyPlane(30);
+  input->GetPoints()->InsertNextPoint(0.5, 0.5, 1.0);
+  auto filter = PlaneEdit(input);
+  filter->SetHandleTransform(Translation(0, 0, 0.2));
+  ErrorCatcher errors(filter);
+  filter->Update();
+  EXPECT_EQ(errors.Messages, "");
+  double q[3];
+  filter->GetOutput()->GetPoint(input->GetNumberOfPoints() - 1, q);
+  EXPECT_EQ(q[2], 1.0);
+}
+
+TEST(Filter, TriangulatesQuadsInternallyAndKeepsThem)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> quads;
+  const int n = 30;
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      points->InsertNextPoint(static_cast<double>(i) / n, static_cast<double>(j) / n, 0.0);
+    }
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const vtkIdType a = j * (n + 1) + i;
+      const vtkIdType ids[4] = { a, a + 1, a + n + 2, a + n + 1 };
+      quads->InsertNextCell(4, ids);
+    }
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(quads);
+  auto filter = PlaneEdit(mesh);
+  filter->SetHandleTransform(Translation(0, 0, 0.2));
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetPolys()->GetMaxCellSize(), 4);
+  double q[3];
+  filter->GetOutput()->GetPoint(15 * (n + 1) + 15, q);
+  EXPECT_NEAR(q[2], 0.2, 1e-3);
+}

@@ -1,0 +1,311 @@
+// Unit tests of the VTK-free numerical core: operators, regions, the editing system, solvers.
+#include "DeformationSystem.h"
+#include "EditRegion.h"
+#include "GeodesicDistance.h"
+#include "LaplacianOperator.h"
+#include "SurfaceMesh.h"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+using namespace LaplacianEditing;
+
+namespace
+{
+// A triangulated grid over [0, width] x [0, 1] with `nx` x `ny` quads, lifted by `height`.
+SurfaceMesh MakeGrid(int nx, int ny, double width = 1.0,
+  const std::function<double(double, double)>& height = nullptr, double xOffset = 0.0)
+{
+  std::vector<Vector3> points;
+  for (int j = 0; j <= ny; ++j)
+  {
+    for (int i = 0; i <= nx; ++i)
+    {
+      const double x = width * i / nx;
+      const double y = static_cast<double>(j) / ny;
+      points.emplace_back(x + xOffset, y, height ? height(x, y) : 0.0);
+    }
+  }
+  std::vector<std::int64_t> offsets(1, 0);
+  std::vector<std::int64_t> connectivity;
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const std::int64_t a = j * (nx + 1) + i;
+      connectivity.insert(connectivity.end(), { a, a + 1, a + nx + 2, a + nx + 1 });
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    }
+  }
+  return SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+}
+
+double Bumps(double x, double y)
+{
+  return 0.03 * std::sin(12 * x) * std::sin(12 * y);
+}
+
+AffineMap Translation(const Vector3& t)
+{
+  AffineMap map = AffineMap::Identity();
+  map.col(3) = t;
+  return map;
+}
+
+struct Edit
+{
+  SurfaceMesh Mesh;
+  EditRegion Region;
+  DeformationSystem System;
+};
+
+void Prepare(Edit& edit, double handleRadius, double roiRadius, const DeformationOptions& options,
+  double padding = 0.1)
+{
+  const int center = edit.Mesh.FindNearestVertex(Vector3(0.5, 0.5, 0.0));
+  ASSERT_EQ(SelectGeodesicRegion(edit.Mesh, center, handleRadius, roiRadius, padding, edit.Region), "");
+  ASSERT_EQ(edit.System.Build(edit.Mesh, edit.Region, options), "");
+}
+}
+
+TEST(SurfaceMesh, MergesCoincidentPointsAndSplitsQuads)
+{
+  // Two quads sharing an edge whose points are duplicated, as at a texture seam.
+  const std::vector<Vector3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 1, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 1, 0 } };
+  const std::vector<std::int64_t> offsets = { 0, 4, 8 };
+  const std::vector<std::int64_t> connectivity = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  const SurfaceMesh merged = SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+  EXPECT_EQ(merged.GetNumberOfVertices(), 6);
+  EXPECT_EQ(merged.GetNumberOfTriangles(), 4);
+  EXPECT_EQ(merged.GetNumberOfComponents(), 1);
+  EXPECT_EQ(merged.GetVertexOfPoint()[1], merged.GetVertexOfPoint()[4]);
+  const SurfaceMesh split = SurfaceMesh::FromPolygons(points, offsets, connectivity, false);
+  EXPECT_EQ(split.GetNumberOfVertices(), 8);
+  EXPECT_EQ(split.GetNumberOfComponents(), 2);
+}
+
+TEST(GeodesicDistance, FollowsEdgesOnAGrid)
+{
+  const SurfaceMesh mesh = MakeGrid(10, 10);
+  const auto d = ComputeGeodesicDistances(mesh, { 0 }, 10.0);
+  EXPECT_NEAR(d[10], 1.0, 1e-12);                // along the bottom edge
+  EXPECT_NEAR(d[120], std::sqrt(2.0), 1e-12);    // along the diagonal edges
+  const auto limited = ComputeGeodesicDistances(mesh, { 0 }, 0.25);
+  EXPECT_TRUE(std::isinf(limited[10]));
+}
+
+TEST(LaplacianOperator, UniformRankIsVerticesMinusComponents)
+{
+  // Two separate grids in one mesh: rank(L) = n - 2 (Section 3).
+  SurfaceMesh a = MakeGrid(4, 4);
+  std::vector<Vector3> points = a.GetPositions();
+  std::vector<std::int64_t> offsets(1, 0), connectivity;
+  for (int copy = 0; copy < 2; ++copy)
+  {
+    for (const auto& tri : a.GetTriangles())
+    {
+      for (int v : tri)
+      {
+        connectivity.push_back(v + copy * a.GetNumberOfVertices());
+      }
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    }
+  }
+  for (const auto& p : a.GetPositions())
+  {
+    points.push_back(p + Vector3(5, 0, 0));
+  }
+  const SurfaceMesh mesh = SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+  ASSERT_EQ(mesh.GetNumberOfComponents(), 2);
+  for (auto weights : { LaplacianWeights::Uniform, LaplacianWeights::Cotangent })
+  {
+    const Eigen::MatrixXd dense = Eigen::MatrixXd(LaplacianOperator(mesh, weights).Matrix());
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(dense);
+    lu.setThreshold(1e-10);
+    EXPECT_EQ(lu.rank(), mesh.GetNumberOfVertices() - 2);
+  }
+}
+
+TEST(LaplacianOperator, RowsSumToZeroAndSecondOrderIsTheSquare)
+{
+  const SurfaceMesh mesh = MakeGrid(8, 8, 1.0, Bumps);
+  for (auto weights : { LaplacianWeights::Uniform, LaplacianWeights::Cotangent })
+  {
+    const LaplacianOperator op(mesh, weights);
+    const Eigen::SparseMatrix<double> L = op.Matrix();
+    const Eigen::SparseMatrix<double> L2 = L * L;
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      double sum = 0.0;
+      for (const auto& [j, value] : op.Row(v, 1))
+      {
+        sum += value;
+      }
+      EXPECT_NEAR(sum, 0.0, 1e-12);
+      for (const auto& [j, value] : op.Row(v, 2))
+      {
+        EXPECT_NEAR(value, L2.coeff(v, j), 1e-12);
+      }
+    }
+  }
+}
+
+TEST(LaplacianOperator, CotangentWeightsStayFiniteOnDegenerateTriangles)
+{
+  // A zero-area sliver (collinear corners) and an obtuse fan.
+  const std::vector<Vector3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 }, { 1, 1, 0 },
+    { 1, -0.01, 0 } };
+  const std::vector<std::int64_t> offsets = { 0, 3, 6, 9 };
+  const std::vector<std::int64_t> connectivity = { 0, 1, 3, 1, 2, 3, 0, 4, 2 };
+  const SurfaceMesh mesh = SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+  const LaplacianOperator op(mesh, LaplacianWeights::Cotangent);
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    double sum = 0.0;
+    for (const auto& [j, value] : op.Row(v, 1))
+    {
+      ASSERT_TRUE(std::isfinite(value));
+      if (j != v)
+      {
+        EXPECT_LE(value, 0.0); // clamped: no negative neighbour weight
+      }
+      sum += value;
+    }
+    EXPECT_NEAR(sum, 0.0, 1e-12);
+  }
+}
+
+class DeformationSystemTest
+  : public ::testing::TestWithParam<std::tuple<LaplacianWeights, int>>
+{
+protected:
+  DeformationOptions Options() const
+  {
+    DeformationOptions options;
+    options.Weights = std::get<0>(this->GetParam());
+    options.Order = std::get<1>(this->GetParam());
+    return options;
+  }
+};
+
+TEST_P(DeformationSystemTest, ReconstructsExactlyWhenNothingMoves)
+{
+  Edit edit{ MakeGrid(40, 40, 1.0, Bumps) };
+  Prepare(edit, 0.05, 0.3, this->Options());
+  const Positions result = edit.System.Solve({});
+  EXPECT_LT((result - edit.System.GetRestPositions()).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+TEST_P(DeformationSystemTest, HandlesMeetTheirTargetsAndTheEditIsLocal)
+{
+  Edit edit{ MakeGrid(40, 40, 1.0, Bumps) };
+  Prepare(edit, 0.05, 0.3, this->Options());
+  const Vector3 lift(0.02, -0.03, 0.15);
+  const Positions result = edit.System.Solve({ Translation(lift) });
+  const Positions& rest = edit.System.GetRestPositions();
+  double anchorMotion = 0.0;
+  int anchors = 0;
+  for (int k = 0; k < edit.Region.GetNumberOfVertices(); ++k)
+  {
+    const double motion = (result.row(k) - rest.row(k)).norm();
+    if (edit.Region.Roles[k] == VertexRole::Handle)
+    {
+      // Constraint met to 0.1% of the mesh size (the grid's diagonal is about 1.4).
+      EXPECT_LT((result.row(k) - rest.row(k) - lift.transpose()).norm(), 1e-3);
+    }
+    else if (edit.Region.Roles[k] == VertexRole::Anchor)
+    {
+      anchorMotion += motion;
+      ++anchors;
+    }
+  }
+  ASSERT_GT(anchors, 0);
+  // Locality: the anchor belt moves on average less than 5% of the handle's motion.
+  EXPECT_LT(anchorMotion / anchors, 0.05 * lift.norm());
+}
+
+TEST_P(DeformationSystemTest, BackendsAgree)
+{
+  if (!SparseCholesky::IsAvailable(SolverBackend::Cholmod))
+  {
+    GTEST_SKIP() << "built without CHOLMOD";
+  }
+  Edit a{ MakeGrid(30, 30, 1.0, Bumps) };
+  Edit b{ MakeGrid(30, 30, 1.0, Bumps) };
+  DeformationOptions options = this->Options();
+  options.Backend = SolverBackend::Cholmod;
+  Prepare(a, 0.05, 0.35, options);
+  options.Backend = SolverBackend::SimplicialLDLT;
+  Prepare(b, 0.05, 0.35, options);
+  const std::vector<AffineMap> maps = { Translation(Vector3(0.1, 0.0, 0.2)) };
+  EXPECT_LT((a.System.Solve(maps) - b.System.Solve(maps)).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+INSTANTIATE_TEST_SUITE_P(WeightsAndOrders, DeformationSystemTest,
+  ::testing::Combine(::testing::Values(LaplacianWeights::Uniform, LaplacianWeights::Cotangent),
+    ::testing::Values(1, 2)));
+
+TEST(DeformationSystem, SecondOrderGivesASmootherTransition)
+{
+  // The paper's Fig. 3 on a strip: pull the middle up with the same constraints and compare
+  // how the edited surface meets the fixed part. The fixed part is flat, so the slope across
+  // the edges that join the ROI to it is the jump in tangent there. The first-order operator
+  // leaves a crease (the slope of the "tent"); the bi-Laplacian joins tangentially. Required:
+  // at least five times smaller with second order.
+  double joinSlope[2];
+  for (int order = 1; order <= 2; ++order)
+  {
+    Edit edit{ MakeGrid(120, 4, 3.0, nullptr, -1.0) };
+    DeformationOptions options;
+    options.Order = order;
+    Prepare(edit, 0.05, 1.2, options);
+    const Positions result = edit.System.Solve({ Translation(Vector3(0, 0, 0.3)) });
+    std::vector<int> local(edit.Mesh.GetNumberOfVertices(), -1);
+    for (int k = 0; k < edit.Region.GetNumberOfVertices(); ++k)
+    {
+      local[edit.Region.Vertices[k]] = k;
+    }
+    double worst = 0.0;
+    for (int k = 0; k < edit.Region.GetNumberOfVertices(); ++k)
+    {
+      const int v = edit.Region.Vertices[k];
+      for (const int* w = edit.Mesh.NeighborsBegin(v); w != edit.Mesh.NeighborsEnd(v); ++w)
+      {
+        if (local[*w] < 0)
+        {
+          const Vector3 edge = result.row(k).transpose() - edit.Mesh.GetPositions()[*w];
+          worst = std::max(worst, std::abs(edge.z()) / edge.head<2>().norm());
+        }
+      }
+    }
+    joinSlope[order - 1] = worst;
+  }
+  std::cout << "slope where the edit joins the fixed part: first order " << joinSlope[0]
+            << ", second order " << joinSlope[1] << " (ratio " << joinSlope[0] / joinSlope[1]
+            << ")\n";
+  EXPECT_LT(joinSlope[1] * 5.0, joinSlope[0]);
+}
+
+TEST(EditRegion, RejectsBadSelections)
+{
+  const SurfaceMesh mesh = MakeGrid(10, 10);
+  EditRegion region;
+  EXPECT_NE(SelectGeodesicRegion(mesh, 0, 0.3, 0.2, 0.1, region), "");  // handle outside ROI
+  EXPECT_NE(SelectGeodesicRegion(mesh, 0, 0.0, 0.2, 0.1, region), "");  // zero radius
+  EXPECT_NE(SelectGeodesicRegion(mesh, -1, 0.1, 0.2, 0.1, region), ""); // no vertex
+  // The whole mesh as ROI and no anchors: nothing pins it.
+  EXPECT_NE(SelectGeodesicRegion(mesh, 0, 0.1, 10.0, 0.0, region), "");
+  // The same with anchors is well posed.
+  EXPECT_EQ(SelectGeodesicRegion(mesh, 0, 0.1, 1.5, 0.1, region), "");
+
+  std::vector<int> labels(mesh.GetNumberOfVertices(), 1);
+  EXPECT_NE(SelectLabeledRegion(mesh, labels, 0.1, region), ""); // no handle
+  labels[0] = 2;
+  labels[5] = 3;
+  EXPECT_EQ(SelectLabeledRegion(mesh, labels, 0.1, region), "");
+  EXPECT_EQ(region.NumberOfHandleGroups, 2);
+}
