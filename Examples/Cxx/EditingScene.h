@@ -59,6 +59,7 @@ inline vtkSmartPointer<vtkRenderer> MakeRenderer(vtkPolyData* mesh, const double
   if (mesh->GetPointData()->GetArray("EditRole"))
   {
     mapper->SetLookupTable(RoleColors());
+    mapper->SetColorModeToMapScalars(); // EditRole is unsigned char: map it, do not show it raw
     mapper->SetScalarModeToUsePointFieldData();
     mapper->SelectColorArray("EditRole");
     mapper->SetScalarRange(0, 3);

@@ -478,6 +478,11 @@ struct BadInput
   const char* Message;
 };
 
+void PrintTo(const BadInput& bad, std::ostream* os)
+{
+  *os << bad.Name;
+}
+
 class FilterBadInput : public ::testing::TestWithParam<BadInput>
 {
 };
