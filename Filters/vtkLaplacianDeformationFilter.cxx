@@ -1,7 +1,7 @@
 #include "vtkLaplacianDeformationFilter.h"
 
-#include "Numerics/DeformationSystem.h"
 #include "Numerics/EditRegion.h"
+#include "Numerics/LaplacianEditor.h"
 #include "Numerics/SurfaceMesh.h"
 
 #include "vtkCellArray.h"
@@ -23,6 +23,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -114,9 +115,9 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   std::vector<double> CacheKey;
   std::string CacheArrayName;
 
-  le::SurfaceMesh Mesh;
+  std::shared_ptr<le::SurfaceMesh> Mesh = std::make_shared<le::SurfaceMesh>();
   le::EditRegion Region;
-  le::DeformationSystem System;
+  le::LaplacianEditor Editor;
   std::vector<int> LocalOfVertex;
   // The core works on coordinates centred on the input's bounding box and scaled to a unit
   // diagonal, so that offset or tiny models keep their precision.
@@ -133,7 +134,6 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   {
     this->CacheKey.clear();
     this->Region = le::EditRegion();
-    this->System = le::DeformationSystem();
   }
 };
 
@@ -317,9 +317,9 @@ int vtkLaplacianDeformationFilter::RequestData(
       connectivity.insert(connectivity.end(), ids, ids + size);
       offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
     }
-    internals.Mesh = le::SurfaceMesh::FromPolygons(
-      points, offsets, connectivity, this->MergeCoincidentPoints != 0);
-    if (internals.Mesh.GetNumberOfTriangles() == 0)
+    internals.Mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
+      points, offsets, connectivity, this->MergeCoincidentPoints != 0));
+    if (internals.Mesh->GetNumberOfTriangles() == 0)
     {
       return fail("The input polygons are all degenerate: no triangle has three distinct "
                   "corners.");
@@ -327,22 +327,22 @@ int vtkLaplacianDeformationFilter::RequestData(
     this->UpdateProgress(0.1);
 
     std::string error;
-    const auto& vertexOfPoint = internals.Mesh.GetVertexOfPoint();
+    const auto& vertexOfPoint = internals.Mesh->GetVertexOfPoint();
     if (selection)
     {
-      std::vector<int> labels(internals.Mesh.GetNumberOfVertices(), 0);
+      std::vector<int> labels(internals.Mesh->GetNumberOfVertices(), 0);
       for (vtkIdType i = 0; i < numberOfPoints; ++i)
       {
         int& label = labels[vertexOfPoint[i]];
         label = std::max(label, static_cast<int>(selection->GetComponent(i, 0)));
       }
-      error = le::SelectLabeledRegion(internals.Mesh, labels, this->AnchorPadding, internals.Region);
+      error = le::SelectLabeledRegion(*internals.Mesh, labels, this->AnchorPadding, internals.Region);
     }
     else
     {
       const int centerVertex =
-        internals.Mesh.FindNearestVertex(internals.Normalize(this->HandleCenter));
-      error = le::SelectGeodesicRegion(internals.Mesh, centerVertex,
+        internals.Mesh->FindNearestVertex(internals.Normalize(this->HandleCenter));
+      error = le::SelectGeodesicRegion(*internals.Mesh, centerVertex,
         this->HandleRadius * internals.Scale, this->ROIRadius * internals.Scale,
         this->AnchorPadding, internals.Region);
     }
@@ -365,13 +365,13 @@ int vtkLaplacianDeformationFilter::RequestData(
     options.AnchorWeight = this->AnchorWeight;
     options.Backend = this->Solver == SOLVER_CHOLMOD ? le::SolverBackend::Cholmod
                                                      : le::SolverBackend::SimplicialLDLT;
-    error = internals.System.Build(internals.Mesh, internals.Region, options);
+    error = internals.Editor.Build(internals.Mesh, internals.Region, options);
+    this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
     if (!error.empty())
     {
       return fail("Cannot factor the editing system: " + error + ".");
     }
-    ++this->NumberOfFactorizations;
-    internals.LocalOfVertex.assign(internals.Mesh.GetNumberOfVertices(), -1);
+    internals.LocalOfVertex.assign(internals.Mesh->GetNumberOfVertices(), -1);
     for (int k = 0; k < internals.Region.GetNumberOfVertices(); ++k)
     {
       internals.LocalOfVertex[internals.Region.Vertices[k]] = k;
@@ -379,10 +379,39 @@ int vtkLaplacianDeformationFilter::RequestData(
     internals.CacheKey = key;
     internals.CacheArrayName = arrayName;
     this->SetupTime = SecondsSince(start);
-    this->AnalysisTime = internals.System.GetFactor().GetAnalysisSeconds();
-    this->FactorizationTime = internals.System.GetFactor().GetFactorizationSeconds();
-    this->UpdateProgress(0.9);
+    this->UpdateProgress(0.7);
   }
+
+  // What the rotation mode needs is built once per region too (the implicit mode factors).
+  le::RotationOptions rotation;
+  rotation.Mode = this->RotationMode == ROTATION_EXPLICIT ? le::RotationMode::Explicit
+    : this->RotationMode == ROTATION_IMPLICIT             ? le::RotationMode::Implicit
+                                                          : le::RotationMode::None;
+  rotation.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
+    ? this->NormalSmoothingRadius * internals.Scale
+    : 0.2 * internals.Region.Radius;
+  rotation.Iterations = this->NumberOfIterations;
+  rotation.PreserveDetailScale = this->PreserveDetailScale != 0;
+  {
+    const Clock::time_point start = Clock::now();
+    bool built = false;
+    const std::string error = internals.Editor.Prepare(rotation, built);
+    this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
+    if (!error.empty())
+    {
+      return fail("Cannot factor the implicit rotation system: " + error + ".");
+    }
+    if (built)
+    {
+      this->SetupTime += SecondsSince(start);
+    }
+    if (this->SetupTime > 0.0)
+    {
+      this->AnalysisTime = internals.Editor.GetAnalysisSeconds();
+      this->FactorizationTime = internals.Editor.GetFactorizationSeconds();
+    }
+  }
+  this->UpdateProgress(0.9);
 
   // Handle transforms, expressed in the normalized frame: x' = M x + t becomes
   // x'_n = M x_n + s (M c + t - c).
@@ -411,7 +440,8 @@ int vtkLaplacianDeformationFilter::RequestData(
     maps[g].col(3) =
       internals.Scale * (linear * internals.Center + translation - internals.Center);
   }
-  const le::Positions solution = internals.System.Solve(maps);
+  le::Positions solution;
+  internals.Editor.Solve(rotation, maps, solution);
   if (!solution.allFinite())
   {
     return fail("The solve produced non-finite coordinates; the handle transform may be "
@@ -422,8 +452,8 @@ int vtkLaplacianDeformationFilter::RequestData(
   vtkNew<vtkPoints> outputPoints;
   outputPoints->SetDataType(inputPoints->GetDataType());
   outputPoints->DeepCopy(inputPoints);
-  const auto& vertexOfPoint = internals.Mesh.GetVertexOfPoint();
-  std::vector<le::Vector3> moved = internals.Mesh.GetPositions();
+  const auto& vertexOfPoint = internals.Mesh->GetVertexOfPoint();
+  std::vector<le::Vector3> moved = internals.Mesh->GetPositions();
   for (int k = 0; k < solution.rows(); ++k)
   {
     moved[internals.Region.Vertices[k]] = solution.row(k).transpose();
@@ -445,7 +475,7 @@ int vtkLaplacianDeformationFilter::RequestData(
   output->SetPoints(outputPoints);
   this->SolveTime = SecondsSince(solveStart);
 
-  const std::vector<le::Vector3> vertexNormals = ComputeVertexNormals(internals.Mesh, moved);
+  const std::vector<le::Vector3> vertexNormals = ComputeVertexNormals(*internals.Mesh, moved);
   ReplaceNormals(output->GetPointData(), numberOfPoints,
     [&](vtkIdType i) { return vertexNormals[vertexOfPoint[i]]; });
   if (output->GetCellData()->GetNormals())
@@ -498,6 +528,9 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
   os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
   os << indent << "RotationMode: " << this->RotationMode << "\n";
+  os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "PreserveDetailScale: " << this->PreserveDetailScale << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
   os << indent << "GenerateEditRoles: " << this->GenerateEditRoles << "\n";

@@ -58,7 +58,9 @@ public:
   };
   enum RotationModes
   {
-    ROTATION_NONE = 0
+    ROTATION_NONE = 0,
+    ROTATION_EXPLICIT = 1,
+    ROTATION_IMPLICIT = 2
   };
   enum Solvers
   {
@@ -140,11 +142,53 @@ public:
 
   ///@{
   /**
-   * How the differential coordinates follow local rotations. Only none for now.
+   * How the differential coordinates follow the local rotations of the edit, so that details
+   * keep their orientation:
+   * - None (default): they keep their global orientation (Section 3);
+   * - Explicit: each is rotated by the rotation of a local frame built on smooth normals of a
+   *   reference edit (Sections 4 and 7);
+   * - Implicit: linearized similarity transforms are solved for together with the shape
+   *   (Section 5); one larger coupled system, factored once per region.
+   * Switching modes never refactors the Laplacian system; the first implicit solve of a
+   * region factors the coupled system.
    */
-  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_NONE);
+  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_IMPLICIT);
   vtkGetMacro(RotationMode, int);
   void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
+  void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
+  void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
+  ///@}
+
+  ///@{
+  /**
+   * Explicit mode: support radius of the smooth normals, in mesh units. It should exceed the
+   * size of the details, so that the normals are those of the surface under them. 0 (the
+   * default) means 0.2 times the ROI radius (in array mode, the largest distance of an ROI
+   * vertex from the handles).
+   */
+  vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(NormalSmoothingRadius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit mode: how many times to re-estimate the rotations from the previous result and
+   * solve again with the same factor. 1 (default) is the paper's method; more fix the
+   * under-rotation of large bends.
+   */
+  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
+  vtkGetMacro(NumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Implicit mode: rescale each transformed differential coordinate to its rest length and
+   * solve the Laplacian system once more (Sorkine et al. 2004). The linearized similarities
+   * otherwise grow details under large rotations. Default on.
+   */
+  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
   ///@}
 
   ///@{
@@ -234,6 +278,9 @@ protected:
   int LaplacianWeights = WEIGHTS_UNIFORM;
   int OperatorOrder = 1;
   int RotationMode = ROTATION_NONE;
+  double NormalSmoothingRadius = 0.0;
+  int NumberOfIterations = 1;
+  vtkTypeBool PreserveDetailScale = 1;
   int Solver = SOLVER_CHOLMOD;
   vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;

@@ -53,57 +53,47 @@ std::string DeformationSystem::Build(
     }
   }
 
-  this->NormalMatrix = Eigen::SparseMatrix<double>(this->RegionOperator.transpose()) *
+  Eigen::SparseMatrix<double> normalMatrix =
+    Eigen::SparseMatrix<double>(this->RegionOperator.transpose()) *
     Eigen::SparseMatrix<double>(this->RegionOperator);
   for (int k = 0; k < n; ++k)
   {
-    this->NormalMatrix.coeffRef(k, k) += this->SquaredWeights[k];
+    normalMatrix.coeffRef(k, k) += this->SquaredWeights[k];
   }
-  this->NormalMatrix.makeCompressed();
-
-  Positions anchorTerm = Positions::Zero(n, 3);
-  for (int k = 0; k < n; ++k)
-  {
-    if (region.Roles[k] == VertexRole::Anchor)
-    {
-      anchorTerm.row(k) = this->SquaredWeights[k] * this->RestPositions.row(k);
-    }
-  }
-  this->ConstantRightHandSide =
-    this->RegionOperator.transpose() * (this->RestDelta - this->FixedPart) + anchorTerm;
-
-  return this->Factor.Factorize(this->NormalMatrix, options.Backend);
+  normalMatrix.makeCompressed();
+  this->RestRightHandSide = this->RegionOperator.transpose() * (this->RestDelta - this->FixedPart);
+  return this->Factor.Factorize(normalMatrix, options.Backend);
 }
 
-Positions DeformationSystem::SolveRightHandSide(
-  Positions rhs, const std::vector<AffineMap>& handleMaps) const
+Positions DeformationSystem::ConstraintRightHandSide(const std::vector<AffineMap>& handleMaps) const
 {
-  for (int k = 0; k < rhs.rows(); ++k)
+  Positions term = Positions::Zero(this->RestPositions.rows(), 3);
+  for (int k = 0; k < term.rows(); ++k)
   {
-    const int group = this->HandleGroups[k];
-    if (group < 0)
+    if (this->SquaredWeights[k] == 0.0)
     {
       continue;
     }
     const Eigen::Vector3d rest = this->RestPositions.row(k).transpose();
-    const Eigen::Vector3d target = group < static_cast<int>(handleMaps.size())
+    const int group = this->HandleGroups[k];
+    const Eigen::Vector3d target = group >= 0 && group < static_cast<int>(handleMaps.size())
       ? Eigen::Vector3d(handleMaps[group].leftCols<3>() * rest + handleMaps[group].col(3))
       : rest;
-    rhs.row(k) += this->SquaredWeights[k] * target.transpose();
+    term.row(k) = this->SquaredWeights[k] * target.transpose();
   }
-  return this->Factor.Solve(rhs);
+  return term;
 }
 
 Positions DeformationSystem::Solve(const std::vector<AffineMap>& handleMaps) const
 {
-  return this->SolveRightHandSide(this->ConstantRightHandSide, handleMaps);
+  return this->Factor.Solve(this->RestRightHandSide + this->ConstraintRightHandSide(handleMaps));
 }
 
 Positions DeformationSystem::SolveWithDifferentialCoordinates(
   const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps) const
 {
-  Positions rhs = this->ConstantRightHandSide +
-    this->RegionOperator.transpose() * (differentialCoordinates - this->RestDelta);
-  return this->SolveRightHandSide(std::move(rhs), handleMaps);
+  return this->Factor.Solve(
+    this->RegionOperator.transpose() * (differentialCoordinates - this->FixedPart) +
+    this->ConstraintRightHandSide(handleMaps));
 }
 }

@@ -50,29 +50,34 @@ public:
   Positions SolveWithDifferentialCoordinates(
     const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps) const;
 
+  /// The constraints' share of A^T b: w_i^2 u_i, with u_i the transformed rest position of a
+  /// handle vertex and the rest position of an anchor; zero for free vertices.
+  Positions ConstraintRightHandSide(const std::vector<AffineMap>& handleMaps) const;
+
   const Positions& GetRestPositions() const { return this->RestPositions; }
   const Positions& GetRestDifferentialCoordinates() const { return this->RestDelta; }
-  const Eigen::SparseMatrix<double>& GetNormalMatrix() const { return this->NormalMatrix; }
+  /// Differential rows restricted to the ROI columns (the unknowns).
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& GetRegionOperator() const
+  {
+    return this->RegionOperator;
+  }
+  /// Contribution of the fixed vertices (outside the ROI) to each differential row.
+  const Positions& GetFixedPart() const { return this->FixedPart; }
+  /// Squared constraint weight of each ROI vertex (0 for free vertices).
+  const Eigen::VectorXd& GetSquaredWeights() const { return this->SquaredWeights; }
   int GetNumberOfUnknowns() const { return static_cast<int>(this->RestPositions.rows()); }
-  bool IsReady() const { return this->Factor.IsFactorized(); }
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
-  Positions SolveRightHandSide(Positions rhs, const std::vector<AffineMap>& handleMaps) const;
-
-  // Differential rows restricted to the ROI columns (the unknowns).
   Eigen::SparseMatrix<double, Eigen::RowMajor> RegionOperator;
-  Eigen::SparseMatrix<double> NormalMatrix;
   SparseCholesky Factor;
   Positions RestPositions;
   Positions RestDelta;
-  // Contribution of the fixed vertices to each differential row.
   Positions FixedPart;
-  // Squared constraint weight of each ROI vertex (0 for free vertices).
   Eigen::VectorXd SquaredWeights;
   std::vector<int> HandleGroups;
-  // A^T b for the rest differential coordinates and the anchors: constant per region.
-  Positions ConstantRightHandSide;
+  // L^T (delta - fixed part) for the rest differential coordinates: constant per region.
+  Positions RestRightHandSide;
 };
 }
 

@@ -10,9 +10,10 @@ namespace LaplacianEditing
 {
 namespace
 {
-// Assigns anchor and free roles from the relative distances, then checks that the system will
-// be well posed: every connected part of the ROI must touch a fixed vertex or hold an anchor,
-// or nothing pins it down.
+// Assigns anchor and free roles from the relative distances, then checks that the edit is well
+// posed: every connected part of the ROI must touch a fixed vertex, hold an anchor, or hold two
+// handle groups. A part held by one handle group alone would only follow it rigidly (and with a
+// translation-invariant operator, its shape is otherwise undetermined).
 std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& region)
 {
   const int n = region.GetNumberOfVertices();
@@ -47,6 +48,7 @@ std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& re
       continue;
     }
     bool pinned = false;
+    int firstGroup = -1;
     visited[seed] = 1;
     stack.assign(1, seed);
     while (!stack.empty())
@@ -54,6 +56,11 @@ std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& re
       const int k = stack.back();
       stack.pop_back();
       pinned = pinned || region.Roles[k] == VertexRole::Anchor;
+      if (region.HandleGroups[k] >= 0)
+      {
+        pinned = pinned || (firstGroup >= 0 && firstGroup != region.HandleGroups[k]);
+        firstGroup = region.HandleGroups[k];
+      }
       const int v = region.Vertices[k];
       for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
       {
@@ -70,9 +77,9 @@ std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& re
     }
     if (!pinned)
     {
-      return "a connected part of the region of interest has no fixed vertex and no anchor, so "
-             "nothing holds it in place: make the ROI smaller than the component or set "
-             "AnchorPadding > 0";
+      return "a connected part of the region of interest has no fixed vertex and no anchor (and "
+             "at most one handle group), so nothing holds it in place: make the ROI smaller than "
+             "the component or set AnchorPadding > 0";
     }
   }
   return {};
@@ -107,6 +114,7 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
     }
   }
   region.NumberOfHandleGroups = 1;
+  region.Radius = roiRadius;
   return Finish(mesh, anchorPadding, region);
 }
 
@@ -153,6 +161,7 @@ std::string SelectLabeledRegion(const SurfaceMesh& mesh, const std::vector<int>&
       largest = std::max(largest, distance[v]);
     }
   }
+  region.Radius = largest;
   for (int v : region.Vertices)
   {
     const double d = std::isfinite(distance[v]) ? distance[v] : largest;

@@ -32,6 +32,9 @@ struct EditRegion
   /// Anchors are weighted in proportion to it (Section 6).
   std::vector<double> RelativeDistances;
   int NumberOfHandleGroups = 0;
+  /// The distance that RelativeDistances are relative to: the ROI radius, or in a labelled
+  /// selection the largest distance of an ROI vertex from the handles.
+  double Radius = 0.0;
 
   int GetNumberOfVertices() const { return static_cast<int>(this->Vertices.size()); }
 };

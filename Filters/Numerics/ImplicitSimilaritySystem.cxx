@@ -1,0 +1,178 @@
+#include "ImplicitSimilaritySystem.h"
+
+#include <Eigen/Dense>
+
+namespace LaplacianEditing
+{
+namespace
+{
+// Flattens n x 3 positions into (x0, y0, z0, x1, ...), the unknowns' order.
+Eigen::VectorXd Interleave(const Positions& positions)
+{
+  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows = positions;
+  return Eigen::Map<const Eigen::VectorXd>(rows.data(), rows.size());
+}
+
+Positions Deinterleave(const Eigen::VectorXd& values)
+{
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+    values.data(), values.size() / 3, 3);
+}
+
+// [x, y, z] -> the 3 x 7 block of Eq. 11 for unknowns (s, h1, h2, h3, tx, ty, tz).
+Eigen::Matrix<double, 3, 7> FitBlock(const Eigen::Vector3d& p)
+{
+  Eigen::Matrix<double, 3, 7> block;
+  block << p.x(), 0.0, p.z(), -p.y(), 1.0, 0.0, 0.0, //
+    p.y(), -p.z(), 0.0, p.x(), 0.0, 1.0, 0.0,         //
+    p.z(), p.y(), -p.x(), 0.0, 0.0, 0.0, 1.0;
+  return block;
+}
+
+// T delta = s delta + h x delta, as a 3 x 4 matrix acting on (s, h1, h2, h3).
+Eigen::Matrix<double, 3, 4> ApplyToDelta(const Eigen::Vector3d& delta)
+{
+  Eigen::Matrix<double, 3, 4> g;
+  g.col(0) = delta;
+  g.col(1) = Eigen::Vector3d::UnitX().cross(delta);
+  g.col(2) = Eigen::Vector3d::UnitY().cross(delta);
+  g.col(3) = Eigen::Vector3d::UnitZ().cross(delta);
+  return g;
+}
+}
+
+std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
+  const DeformationSystem& plain, SolverBackend backend)
+{
+  const int n = region.GetNumberOfVertices();
+  this->NumberOfVertices = n;
+  this->RestDelta = plain.GetRestDifferentialCoordinates();
+  const auto& positions = mesh.GetPositions();
+  std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);
+  for (int row = 0; row < n; ++row)
+  {
+    roiRow[region.Vertices[row]] = row;
+  }
+
+  // Rings and fits.
+  this->RingOffsets.assign(1, 0);
+  this->RingRoiRows.clear();
+  std::vector<int> ringVertices;
+  for (int row = 0; row < n; ++row)
+  {
+    const int v = region.Vertices[row];
+    ringVertices.push_back(v);
+    ringVertices.insert(ringVertices.end(), mesh.NeighborsBegin(v), mesh.NeighborsEnd(v));
+    this->RingOffsets.push_back(static_cast<int>(ringVertices.size()));
+  }
+  this->RingRest.resize(static_cast<Eigen::Index>(ringVertices.size()), 3);
+  for (std::size_t k = 0; k < ringVertices.size(); ++k)
+  {
+    this->RingRoiRows.push_back(roiRow[ringVertices[k]]);
+    this->RingRest.row(k) = positions[ringVertices[k]].transpose();
+  }
+  this->Fits.resize(n);
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd known = Eigen::VectorXd::Zero(3 * n);
+  const auto& laplacian = plain.GetRegionOperator();
+  const Positions& fixedPart = plain.GetFixedPart();
+  for (int row = 0; row < n; ++row)
+  {
+    const int begin = this->RingOffsets[row];
+    const int size = this->RingOffsets[row + 1] - begin;
+    // Centre on the vertex for conditioning; the translation absorbs the shift.
+    Eigen::MatrixXd fitMatrix(3 * size, 7);
+    for (int q = 0; q < size; ++q)
+    {
+      fitMatrix.middleRows<3>(3 * q) =
+        FitBlock(this->RingRest.row(begin + q) - this->RingRest.row(begin));
+    }
+    this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
+    const Eigen::MatrixXd transformDelta =
+      ApplyToDelta(this->RestDelta.row(row).transpose()) * this->Fits[row];
+
+    // Rows 3 row + c: D(V')_row - T_row(V') delta_row = -fixed part.
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        triplets.emplace_back(3 * row + c, 3 * static_cast<int>(it.col()) + c, it.value());
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      known[3 * row + c] -= fixedPart(row, c);
+    }
+    for (int q = 0; q < size; ++q)
+    {
+      const int member = this->RingRoiRows[begin + q];
+      const Eigen::Matrix3d block = transformDelta.middleCols<3>(3 * q);
+      if (member >= 0)
+      {
+        for (int a = 0; a < 3; ++a)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            triplets.emplace_back(3 * row + a, 3 * member + c, -block(a, c));
+          }
+        }
+      }
+      else
+      {
+        known.segment<3>(3 * row) += block * this->RingRest.row(begin + q).transpose();
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> system(3 * n, 3 * n);
+  system.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SparseMatrix<double> transposed = system.transpose();
+  Eigen::SparseMatrix<double> normalMatrix = transposed * system;
+  const Eigen::VectorXd& squaredWeights = plain.GetSquaredWeights();
+  for (int k = 0; k < 3 * n; ++k)
+  {
+    normalMatrix.coeffRef(k, k) += squaredWeights[k / 3];
+  }
+  normalMatrix.makeCompressed();
+  this->KnownRightHandSide = transposed * known;
+  return this->Factor.Factorize(normalMatrix, backend);
+}
+
+Positions ImplicitSimilaritySystem::Solve(
+  const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const
+{
+  const Eigen::VectorXd rhs =
+    this->KnownRightHandSide + Interleave(plain.ConstraintRightHandSide(handleMaps));
+  return Deinterleave(this->Factor.Solve(rhs));
+}
+
+Eigen::VectorXd ImplicitSimilaritySystem::Ring(int row, const Positions& roiPositions) const
+{
+  const int begin = this->RingOffsets[row];
+  const int size = this->RingOffsets[row + 1] - begin;
+  Eigen::VectorXd ring(3 * size);
+  for (int q = 0; q < size; ++q)
+  {
+    const int member = this->RingRoiRows[begin + q];
+    ring.segment<3>(3 * q) = member >= 0 ? roiPositions.row(member).transpose()
+                                         : this->RingRest.row(begin + q).transpose();
+  }
+  return ring;
+}
+
+Positions ImplicitSimilaritySystem::RotatedDifferentialCoordinates(const Positions& roiPositions) const
+{
+  Positions rotated(this->NumberOfVertices, 3);
+  for (int row = 0; row < this->NumberOfVertices; ++row)
+  {
+    const Eigen::Vector3d delta = this->RestDelta.row(row).transpose();
+    const Eigen::Vector3d transformed =
+      ApplyToDelta(delta) * (this->Fits[row] * this->Ring(row, roiPositions));
+    const double length = transformed.norm();
+    const Eigen::Vector3d rescaled =
+      length > 0.0 ? Eigen::Vector3d(transformed * (delta.norm() / length)) : delta;
+    rotated.row(row) = rescaled.transpose();
+  }
+  return rotated;
+}
+}

@@ -1,0 +1,88 @@
+// Helpers shared by the filter tests.
+#ifndef FilterTestHelpers_h
+#define FilterTestHelpers_h
+
+#include "vtkBumpyPlaneSource.h"
+#include "vtkLaplacianDeformationFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace FilterTestHelpers
+{
+inline const std::string DataDir = LAPLACIAN_EDITING_DATA_DIR;
+
+// Collects the filter's error messages instead of printing them.
+class ErrorCatcher
+{
+public:
+  explicit ErrorCatcher(vtkObject* object)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
+      static_cast<ErrorCatcher*>(self)->Messages += static_cast<const char*>(message);
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+  std::string Messages;
+
+private:
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+inline vtkSmartPointer<vtkPolyData> BumpyPlane(int resolution = 60)
+{
+  vtkNew<vtkBumpyPlaneSource> source;
+  source->SetResolution(resolution);
+  source->Update();
+  return source->GetOutput();
+}
+
+inline double Diagonal(vtkPolyData* mesh)
+{
+  return mesh->GetLength();
+}
+
+inline double MaxPointDistance(vtkPolyData* a, vtkPolyData* b)
+{
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+  }
+  return worst;
+}
+
+inline vtkSmartPointer<vtkLaplacianDeformationFilter> PlaneEdit(vtkPolyData* input)
+{
+  auto filter = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  filter->SetInputData(input);
+  filter->SetHandleCenter(0.5, 0.5, 0.0);
+  filter->SetHandleRadius(0.06);
+  filter->SetROIRadius(0.35);
+  return filter;
+}
+
+inline vtkSmartPointer<vtkTransform> Translation(double x, double y, double z)
+{
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->Translate(x, y, z);
+  return transform;
+}
+}
+
+using namespace FilterTestHelpers;
+
+#endif
