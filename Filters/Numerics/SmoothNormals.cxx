@@ -6,11 +6,28 @@
 
 namespace LaplacianEditing
 {
+namespace
+{
+// The paper's fall-off p(t) = 2t^3 - 3t^2 + 1 for t = distance / radius in [0, 1].
+double FallOff(double distance, double radius)
+{
+  const double t = distance / radius;
+  return 2.0 * t * t * t - 3.0 * t * t + 1.0;
+}
+}
+
 void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius)
 {
   this->Radius = radius;
   const auto& positions = mesh.GetPositions();
   const int n = static_cast<int>(vertices.size());
+  const double spacing = 0.25 * radius;
+  const double blendRadius = 0.5 * radius;
+  std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);
+  for (int row = 0; row < n; ++row)
+  {
+    roiRow[vertices[row]] = row;
+  }
 
   // Extended index: support vertices first (in order of discovery), then their one-ring.
   std::vector<int> extended(mesh.GetNumberOfVertices(), -1);
@@ -24,14 +41,22 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
     return extended[v];
   };
 
-  // Bounded Dijkstra from each ROI vertex, reusing one distance array.
+  // Greedy cover: an uncovered ROI vertex becomes a sample; one Dijkstra of the full radius
+  // from it gives its kernel, the vertices it covers and the vertices it blends into.
+  std::vector<char> covered(n, 0);
   std::vector<double> distance(mesh.GetNumberOfVertices(), radius);
   std::vector<int> touched;
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> sampleTriplets, blendTriplets;
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  int samples = 0;
   for (int row = 0; row < n; ++row)
   {
+    if (covered[row])
+    {
+      continue;
+    }
+    const int sample = samples++;
     const int source = vertices[row];
     distance[source] = 0.0;
     touched.assign(1, source);
@@ -44,8 +69,12 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
       {
         continue;
       }
-      const double t = d / radius;
-      triplets.emplace_back(row, extend(v), 2.0 * t * t * t - 3.0 * t * t + 1.0);
+      sampleTriplets.emplace_back(sample, extend(v), FallOff(d, radius));
+      if (roiRow[v] >= 0 && d < blendRadius)
+      {
+        blendTriplets.emplace_back(roiRow[v], sample, FallOff(d, blendRadius));
+        covered[roiRow[v]] = covered[roiRow[v]] || d <= spacing;
+      }
       for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
       {
         const double candidate = d + (positions[*w] - positions[v]).norm();
@@ -66,8 +95,10 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
     }
   }
   this->NumberOfSupportVertices = static_cast<int>(extendedVertices.size());
-  this->Weights.resize(n, this->NumberOfSupportVertices);
-  this->Weights.setFromTriplets(triplets.begin(), triplets.end());
+  this->SampleWeights.resize(samples, this->NumberOfSupportVertices);
+  this->SampleWeights.setFromTriplets(sampleTriplets.begin(), sampleTriplets.end());
+  this->BlendWeights.resize(n, samples);
+  this->BlendWeights.setFromTriplets(blendTriplets.begin(), blendTriplets.end());
 
   // Area normals of the support need the triangles around it, and their corners.
   std::vector<char> seen(mesh.GetNumberOfTriangles(), 0);
@@ -84,12 +115,6 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
         this->Triangles.push_back({ extend(tri[0]), extend(tri[1]), extend(tri[2]) });
       }
     }
-  }
-
-  std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);
-  for (int row = 0; row < n; ++row)
-  {
-    roiRow[vertices[row]] = row;
   }
   this->ExtendedRoiRow.resize(extendedVertices.size());
   this->ExtendedRest.resize(static_cast<Eigen::Index>(extendedVertices.size()), 3);
@@ -124,7 +149,9 @@ Positions SmoothNormals::Compute(const Positions& roiPositions) const
       }
     }
   }
-  Positions normals = this->Weights * areaNormals;
+  Positions sampleNormals = this->SampleWeights * areaNormals;
+  sampleNormals.rowwise().normalize();
+  Positions normals = this->BlendWeights * sampleNormals;
   normals.rowwise().normalize();
   return normals;
 }

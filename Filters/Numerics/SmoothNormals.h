@@ -1,7 +1,16 @@
-// Normals of the underlying smooth surface (Section 7): at each ROI vertex j, the average of the
-// area-weighted vertex normals within radius r, weighted by p(t) = 2t^3/r^3 - 3t^2/r^2 + 1
-// over the Dijkstra distance t. The neighbourhoods and weights depend only on the rest mesh
-// and the region, so Build computes them once; Compute then costs one sparse product.
+// Normals of the underlying smooth surface (Section 7): averages of the area-weighted vertex
+// normals within radius r, weighted by p(t) = 2t^3/r^3 - 3t^2/r^2 + 1 over the Dijkstra
+// distance t.
+//
+// Evaluating that kernel at every vertex costs O(n r^2) per handle move, which is too slow for
+// interactive editing of large regions with a radius wider than the details. So the kernel is
+// evaluated exactly at sample vertices spaced r/4 apart (a greedy geodesic cover of the ROI),
+// and each ROI vertex blends the unit normals of the samples within r/2 with the same fall-off
+// over r/2. The cost is then O(n) whatever the radius, the result stays smooth, and it is
+// exactly equivariant: a rigid motion of the mesh rotates the normals with it.
+//
+// The samples, neighbourhoods and weights depend only on the rest mesh and the region, so Build
+// computes them once; Compute then costs two sparse products.
 #ifndef LaplacianEditing_SmoothNormals_h
 #define LaplacianEditing_SmoothNormals_h
 
@@ -19,7 +28,7 @@ using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 class SmoothNormals
 {
 public:
-  /// Precomputes the weights for the ROI `vertices` and support radius `radius`.
+  /// Precomputes the samples and weights for the ROI `vertices` and support radius `radius`.
   void Build(const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius);
 
   /// Unit smooth normals at the ROI vertices, for ROI positions `roiPositions` (rows follow
@@ -27,13 +36,14 @@ public:
   Positions Compute(const Positions& roiPositions) const;
 
   double GetRadius() const { return this->Radius; }
-  /// Stored neighbour weights: the memory and per-move cost grow with it.
-  Eigen::Index GetNumberOfWeights() const { return this->Weights.nonZeros(); }
+  int GetNumberOfSamples() const { return static_cast<int>(this->SampleWeights.rows()); }
 
 private:
   double Radius = 0.0;
-  // Rows: ROI vertices; columns: support vertices (within the radius of some ROI vertex).
-  Eigen::SparseMatrix<double, Eigen::RowMajor> Weights;
+  // Rows: samples; columns: support vertices (within the radius of a sample).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> SampleWeights;
+  // Rows: ROI vertices; columns: samples within half the radius.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> BlendWeights;
   // Support vertices and the one-ring around them, with their rest positions, and the ROI row
   // of each (-1 outside the ROI).
   std::vector<int> ExtendedRoiRow;
