@@ -17,6 +17,9 @@
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "vtkBumpyPlaneSource.h"
 #include "vtkLaplacianDeformationFilter.h"
 
@@ -35,8 +38,8 @@ inline vtkSmartPointer<vtkLookupTable> RoleColors()
   return table;
 }
 
-/// The embedded default edit: lift one side of a bumpy plane (the paper's Fig. 6, top).
-/// Returns the unedited plane.
+/// The embedded default edit: lift one side of a bumpy plane (the paper's Fig. 6, top), with
+/// explicit detail rotations. Returns the unedited plane.
 inline vtkSmartPointer<vtkPolyData> SetUpBumpyPlaneEdit(vtkLaplacianDeformationFilter* filter)
 {
   vtkNew<vtkBumpyPlaneSource> source;
@@ -45,6 +48,7 @@ inline vtkSmartPointer<vtkPolyData> SetUpBumpyPlaneEdit(vtkLaplacianDeformationF
   filter->SetHandleCenter(0.8, 0.5, 0.0);
   filter->SetHandleRadius(0.08);
   filter->SetROIRadius(0.6);
+  filter->SetRotationModeToExplicit();
   vtkNew<vtkTransform> lift;
   lift->Translate(0.0, 0.0, 0.3);
   filter->SetHandleTransform(lift);
@@ -79,39 +83,78 @@ inline vtkSmartPointer<vtkRenderer> MakeRenderer(vtkPolyData* mesh, const double
   return renderer;
 }
 
-/// An offscreen window: `before` on the left, `after` on the right, seen from one camera
-/// looking along `viewDirection` with `viewUp`.
-inline vtkSmartPointer<vtkRenderWindow> MakeBeforeAfterWindow(vtkPolyData* before,
-  vtkPolyData* after, const double viewDirection[3], const double viewUp[3], int width = 800,
-  int height = 400)
+/// Bounds of the points of `meshes` that the edit moved or held (EditRole other than fixed).
+inline void GetRegionBounds(const std::vector<vtkPolyData*>& meshes, double bounds[6])
 {
-  const double left[4] = { 0.0, 0.0, 0.5, 1.0 };
-  const double right[4] = { 0.5, 0.0, 1.0, 1.0 };
-  auto window = vtkSmartPointer<vtkRenderWindow>::New();
-  window->SetSize(width, height);
-  window->SetMultiSamples(0);
-  window->OffScreenRenderingOn();
-  auto first = MakeRenderer(before, left);
-  auto second = MakeRenderer(after, right);
-  window->AddRenderer(first);
-  window->AddRenderer(second);
-
-  // Frame both meshes with one camera.
-  double bounds[6], other[6];
-  before->GetBounds(bounds);
-  after->GetBounds(other);
   for (int i = 0; i < 3; ++i)
   {
-    bounds[2 * i] = std::min(bounds[2 * i], other[2 * i]);
-    bounds[2 * i + 1] = std::max(bounds[2 * i + 1], other[2 * i + 1]);
+    bounds[2 * i] = VTK_DOUBLE_MAX;
+    bounds[2 * i + 1] = VTK_DOUBLE_MIN;
   }
-  vtkCamera* camera = first->GetActiveCamera();
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetPosition(-viewDirection[0], -viewDirection[1], -viewDirection[2]);
-  camera->SetViewUp(viewUp[0], viewUp[1], viewUp[2]);
-  first->ResetCamera(bounds);
-  camera->Zoom(1.2);
-  second->SetActiveCamera(camera);
+  for (vtkPolyData* mesh : meshes)
+  {
+    vtkDataArray* roles = mesh->GetPointData()->GetArray("EditRole");
+    for (vtkIdType p = 0; roles && p < mesh->GetNumberOfPoints(); ++p)
+    {
+      if (roles->GetTuple1(p) != 0)
+      {
+        const double* x = mesh->GetPoint(p);
+        for (int i = 0; i < 3; ++i)
+        {
+          bounds[2 * i] = std::min(bounds[2 * i], x[i]);
+          bounds[2 * i + 1] = std::max(bounds[2 * i + 1], x[i]);
+        }
+      }
+    }
+  }
+}
+
+/// An offscreen window showing `meshes` side by side, all seen from one camera looking along
+/// `viewDirection` with `viewUp`, framing `frameBounds` (by default, all the meshes).
+inline vtkSmartPointer<vtkRenderWindow> MakeComparisonWindow(
+  const std::vector<vtkPolyData*>& meshes, const double viewDirection[3], const double viewUp[3],
+  int panelWidth = 400, int height = 400, const double* frameBounds = nullptr)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  const int panels = static_cast<int>(meshes.size());
+  window->SetSize(panelWidth * panels, height);
+  window->SetMultiSamples(0);
+  window->OffScreenRenderingOn();
+
+  // One camera for all panels.
+  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  for (vtkPolyData* mesh : meshes)
+  {
+    double b[6];
+    mesh->GetBounds(b);
+    for (int i = 0; i < 6; ++i)
+    {
+      bounds[i] = frameBounds ? frameBounds[i]
+                              : (i % 2 ? std::max(bounds[i], b[i]) : std::min(bounds[i], b[i]));
+    }
+  }
+  vtkCamera* camera = nullptr;
+  for (int i = 0; i < panels; ++i)
+  {
+    const double viewport[4] = { static_cast<double>(i) / panels, 0.0,
+      static_cast<double>(i + 1) / panels, 1.0 };
+    auto renderer = MakeRenderer(meshes[i], viewport);
+    window->AddRenderer(renderer);
+    if (!camera)
+    {
+      camera = renderer->GetActiveCamera();
+      camera->SetFocalPoint(0, 0, 0);
+      camera->SetPosition(-viewDirection[0], -viewDirection[1], -viewDirection[2]);
+      camera->SetViewUp(viewUp[0], viewUp[1], viewUp[2]);
+      renderer->ResetCamera(bounds);
+      camera->Zoom(1.2);
+    }
+    else
+    {
+      renderer->SetActiveCamera(camera);
+    }
+  }
   return window;
 }
 }

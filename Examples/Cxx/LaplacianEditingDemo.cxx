@@ -1,10 +1,11 @@
 // The demo: one detail-preserving edit, written as a mesh and as a before/after picture.
 //
-//   LaplacianEditingDemo [--output-dir DIR] [MESH X Y Z ROI_RADIUS]
+//   LaplacianEditingDemo [--output-dir DIR] [--mode none|explicit|implicit] [MESH X Y Z ROI_RADIUS]
 //
 // Without a mesh it edits the embedded bumpy plane. With one (OBJ, PLY, STL, VTP or VTK) it
 // puts the handle at the surface vertex nearest (X, Y, Z), with a handle radius of 15% of
 // ROI_RADIUS, and pulls it outward (away from the mesh centre) by 30% of ROI_RADIUS.
+// Details follow the edit's rotations with explicit local frames unless --mode says otherwise.
 // It prints the ROI size, the factorization time and the median time of one handle move.
 #include "EditingScene.h"
 #include "MeshReader.h"
@@ -27,16 +28,23 @@
 
 int main(int argc, char* argv[])
 {
+  const char* usage = " [--output-dir DIR] [--mode none|explicit|implicit] [MESH X Y Z ROI_RADIUS]\n";
   std::string outputDir = "demo-output";
+  int mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--output-dir" && i + 1 < argc)
       outputDir = argv[++i];
+    else if (arg == "--mode" && i + 1 < argc)
+    {
+      const std::string name = argv[++i];
+      mode = name == "none" ? 0 : (name == "implicit" ? 2 : 1);
+    }
     else if (arg == "-h" || arg == "--help")
     {
-      std::cout << "usage: " << argv[0] << " [--output-dir DIR] [MESH X Y Z ROI_RADIUS]\n";
+      std::cout << "usage: " << argv[0] << usage;
       return EXIT_SUCCESS;
     }
     else
@@ -44,7 +52,7 @@ int main(int argc, char* argv[])
   }
   if (!args.empty() && args.size() != 5)
   {
-    std::cerr << "usage: " << argv[0] << " [--output-dir DIR] [MESH X Y Z ROI_RADIUS]\n";
+    std::cerr << "usage: " << argv[0] << usage;
     return EXIT_FAILURE;
   }
 
@@ -88,6 +96,7 @@ int main(int argc, char* argv[])
     vtkMath::Perpendiculars(outward, viewDirection, viewUp, 0.0);
   }
 
+  filter->SetRotationMode(mode);
   // Select and factor once, with the handle at rest.
   vtkNew<vtkTransform> handle;
   filter->SetHandleTransform(handle);
@@ -97,9 +106,11 @@ int main(int argc, char* argv[])
     std::cerr << "error: the filter could not set up the edit (see the message above)\n";
     return EXIT_FAILURE;
   }
+  const char* modeNames[] = { "none", "explicit", "implicit" };
   std::cout << "mesh: " << meshName << " (" << before->GetNumberOfPoints() << " points)\n"
             << "ROI vertices: " << filter->GetNumberOfROIVertices()
-            << ", handle vertices: " << filter->GetNumberOfHandleVertices() << "\n"
+            << ", handle vertices: " << filter->GetNumberOfHandleVertices()
+            << ", rotation mode: " << modeNames[mode] << "\n"
             << "setup: " << filter->GetSetupTime() << " s (ordering "
             << filter->GetAnalysisTime() << " s, factorization " << filter->GetFactorizationTime()
             << " s)\n";
@@ -129,8 +140,8 @@ int main(int argc, char* argv[])
   writer->SetFileName(meshPath.c_str());
   writer->Write();
 
-  vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeBeforeAfterWindow(
-    before, filter->GetOutput(), viewDirection, viewUp, 1200, 600);
+  vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeComparisonWindow(
+    { before, filter->GetOutput() }, viewDirection, viewUp, 600, 600);
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);

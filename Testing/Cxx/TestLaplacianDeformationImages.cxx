@@ -1,72 +1,194 @@
 // Offscreen image regression tests of real edits, compared with committed baselines.
 // Usage: TestLaplacianDeformationImages <case> <data folder> -V <baseline.png> -T <temp folder>
+//
+//   BumpyPlaneEdit  the demo's embedded edit: before and after
+//   Fig6Rotations   the paper's Fig. 6 (top): original, bent without rotations, bent with
+//                   explicit rotations
+//   Fig3Orders      the paper's Fig. 3: a strip pulled up, first and second order
+//   BunnyModes      the Stanford bunny's ear bent: none, explicit, implicit
 #include "EditingScene.h"
 
+#include "vtkBumpyPlaneSource.h"
 #include "vtkLaplacianDeformationFilter.h"
 
+#include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkOBJReader.h"
+#include "vtkPlaneSource.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkTransform.h"
 
+#include <functional>
 #include <iostream>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> BunnyEdit(vtkLaplacianDeformationFilter* filter, const std::string& data)
+using Filter = vtkLaplacianDeformationFilter;
+
+struct Scene
+{
+  std::vector<vtkSmartPointer<vtkPolyData>> Meshes;
+  double ViewDirection[3] = { 0.0, 1.0, -0.6 };
+  double ViewUp[3] = { 0.0, 0.0, 1.0 };
+  bool FrameRegion = false; // frame the edited region instead of the whole meshes
+};
+
+vtkSmartPointer<vtkPolyData> Edited(Filter* filter)
+{
+  filter->Update();
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(filter->GetOutput());
+  return copy;
+}
+
+Scene BumpyPlaneEdit(const std::string&)
+{
+  Scene scene;
+  vtkNew<Filter> filter;
+  scene.Meshes = { EditingScene::SetUpBumpyPlaneEdit(filter), Edited(filter) };
+  return scene;
+}
+
+Scene Fig6Rotations(const std::string&)
+{
+  vtkNew<vtkBumpyPlaneSource> source;
+  source->Update();
+  auto plane = vtkSmartPointer<vtkPolyData>::New();
+  plane->ShallowCopy(source->GetOutput());
+  vtkNew<vtkIntArray> selection;
+  selection->SetName("Selection");
+  for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
+  {
+    const double x = plane->GetPoint(i)[0];
+    selection->InsertNextValue(x < 0.03 ? 0 : (x > 0.97 ? 2 : 1));
+  }
+  plane->GetPointData()->AddArray(selection);
+  vtkNew<vtkTransform> bend;
+  bend->Translate(0.97, 0.5, 0.4);
+  bend->RotateY(-60.0);
+  bend->Translate(-0.97, -0.5, 0.0);
+  Scene scene;
+  scene.Meshes.push_back(plane);
+  for (int mode : { Filter::ROTATION_NONE, Filter::ROTATION_EXPLICIT })
+  {
+    vtkNew<Filter> filter;
+    filter->SetInputData(plane);
+    filter->SetSelectionModeToArray();
+    filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Selection");
+    filter->SetRotationMode(mode);
+    filter->SetHandleTransform(bend);
+    scene.Meshes.push_back(Edited(filter));
+  }
+  return scene;
+}
+
+Scene Fig3Orders(const std::string&)
+{
+  vtkNew<vtkPlaneSource> strip;
+  strip->SetOrigin(-1.5, 0.0, 0.0);
+  strip->SetPoint1(1.5, 0.0, 0.0);
+  strip->SetPoint2(-1.5, 0.5, 0.0);
+  strip->SetResolution(120, 20);
+  strip->Update();
+  vtkNew<vtkTransform> pull;
+  pull->Translate(0.0, 0.0, 0.5);
+  Scene scene;
+  for (int order : { 1, 2 })
+  {
+    vtkNew<Filter> filter;
+    filter->SetInputConnection(strip->GetOutputPort());
+    filter->SetHandleCenter(0.0, 0.25, 0.0);
+    filter->SetHandleRadius(0.02);
+    filter->SetROIRadius(1.2);
+    filter->SetOperatorOrder(order);
+    filter->SetHandleTransform(pull);
+    scene.Meshes.push_back(Edited(filter));
+  }
+  scene.ViewDirection[0] = 0.3, scene.ViewDirection[1] = 1.0, scene.ViewDirection[2] = -0.5;
+  return scene;
+}
+
+Scene BunnyModes(const std::string& data)
 {
   vtkNew<vtkOBJReader> reader;
   reader->SetFileName((data + "/stanford-bunny.obj").c_str());
   reader->Update();
   vtkPolyData* bunny = reader->GetOutput();
-  // The handle on the top of an ear (the highest vertex), pulled up and back.
+  // The handle on the top of an ear (the highest vertex).
   vtkIdType top = 0;
   for (vtkIdType i = 1; i < bunny->GetNumberOfPoints(); ++i)
   {
     top = bunny->GetPoint(i)[1] > bunny->GetPoint(top)[1] ? i : top;
   }
   const double diagonal = bunny->GetLength();
-  filter->SetInputData(bunny);
-  filter->SetHandleCenter(bunny->GetPoint(top));
-  filter->SetHandleRadius(0.03 * diagonal);
-  filter->SetROIRadius(0.3 * diagonal);
-  vtkNew<vtkTransform> pull;
-  pull->Translate(0.0, 0.08 * diagonal, -0.08 * diagonal);
-  filter->SetHandleTransform(pull);
-  return bunny;
+  double tip[3];
+  bunny->GetPoint(top, tip);
+  auto earEdit = [&](int mode) {
+    vtkNew<Filter> filter;
+    filter->SetInputData(bunny);
+    filter->SetHandleCenter(tip);
+    filter->SetHandleRadius(0.03 * diagonal);
+    filter->SetROIRadius(0.22 * diagonal);
+    filter->SetRotationMode(mode);
+    return filter;
+  };
+  // Bend the ear about its cross-section at the ROI's edge (the anchors' centroid), 40 degrees
+  // about the view axis.
+  auto rest = earEdit(Filter::ROTATION_NONE);
+  rest->Update();
+  vtkDataArray* roles = rest->GetOutput()->GetPointData()->GetArray("EditRole");
+  double pivot[3] = { 0.0, 0.0, 0.0 };
+  int anchors = 0;
+  for (vtkIdType i = 0; i < bunny->GetNumberOfPoints(); ++i)
+  {
+    if (roles->GetTuple1(i) == Filter::ROLE_ANCHOR)
+    {
+      vtkMath::Add(pivot, bunny->GetPoint(i), pivot);
+      ++anchors;
+    }
+  }
+  vtkMath::MultiplyScalar(pivot, 1.0 / anchors);
+  vtkNew<vtkTransform> bend;
+  bend->Translate(pivot);
+  bend->RotateZ(40.0);
+  bend->Translate(-pivot[0], -pivot[1], -pivot[2]);
+  Scene scene;
+  for (int mode : { Filter::ROTATION_NONE, Filter::ROTATION_EXPLICIT, Filter::ROTATION_IMPLICIT })
+  {
+    auto filter = earEdit(mode);
+    filter->SetHandleTransform(bend);
+    scene.Meshes.push_back(Edited(filter));
+  }
+  scene.ViewDirection[0] = 0.0, scene.ViewDirection[1] = 0.0, scene.ViewDirection[2] = -1.0;
+  scene.ViewUp[0] = 0.0, scene.ViewUp[1] = 1.0, scene.ViewUp[2] = 0.0;
+  return scene;
 }
 }
 
 int main(int argc, char* argv[])
 {
-  if (argc < 3)
+  const std::map<std::string, std::function<Scene(const std::string&)>> cases = {
+    { "BumpyPlaneEdit", BumpyPlaneEdit }, { "Fig6Rotations", Fig6Rotations },
+    { "Fig3Orders", Fig3Orders }, { "BunnyModes", BunnyModes }
+  };
+  if (argc < 3 || !cases.count(argv[1]))
   {
     std::cerr << "usage: " << argv[0] << " <case> <data folder> -V <baseline> -T <temp>\n";
     return EXIT_FAILURE;
   }
-  const std::string name = argv[1];
-  vtkNew<vtkLaplacianDeformationFilter> filter;
-  vtkSmartPointer<vtkPolyData> before;
-  double direction[3] = { 0.0, 1.0, -0.6 };
-  double up[3] = { 0.0, 0.0, 1.0 };
-  if (name == "BumpyPlaneEdit")
+  const Scene scene = cases.at(argv[1])(argv[2]);
+  std::vector<vtkPolyData*> meshes;
+  for (const auto& mesh : scene.Meshes)
   {
-    before = EditingScene::SetUpBumpyPlaneEdit(filter);
+    meshes.push_back(mesh);
   }
-  else if (name == "BunnyEdit")
-  {
-    before = BunnyEdit(filter, argv[2]);
-    direction[0] = 0.0, direction[1] = 0.0, direction[2] = -1.0;
-    up[0] = 0.0, up[1] = 1.0, up[2] = 0.0;
-  }
-  else
-  {
-    std::cerr << "unknown case " << name << "\n";
-    return EXIT_FAILURE;
-  }
-  filter->Update();
-  vtkSmartPointer<vtkRenderWindow> window =
-    EditingScene::MakeBeforeAfterWindow(before, filter->GetOutput(), direction, up);
+  double region[6];
+  EditingScene::GetRegionBounds(meshes, region);
+  vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeComparisonWindow(
+    meshes, scene.ViewDirection, scene.ViewUp, 400, 400, scene.FrameRegion ? region : nullptr);
   window->Render();
   const int result = vtkRegressionTestImageThreshold(window, 0.05);
   return result == vtkRegressionTester::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
