@@ -1,8 +1,6 @@
 #include "SmoothNormals.h"
 
-#include <functional>
-#include <queue>
-#include <utility>
+#include "GeodesicDistance.h"
 
 namespace LaplacianEditing
 {
@@ -44,11 +42,8 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
   // Greedy cover: an uncovered ROI vertex becomes a sample; one Dijkstra of the full radius
   // from it gives its kernel, the vertices it covers and the vertices it blends into.
   std::vector<char> covered(n, 0);
-  std::vector<double> distance(mesh.GetNumberOfVertices(), radius);
-  std::vector<int> touched;
   std::vector<Eigen::Triplet<double>> sampleTriplets, blendTriplets;
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  GeodesicSearch search(mesh);
   int samples = 0;
   for (int row = 0; row < n; ++row)
   {
@@ -57,42 +52,14 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
       continue;
     }
     const int sample = samples++;
-    const int source = vertices[row];
-    distance[source] = 0.0;
-    touched.assign(1, source);
-    queue.emplace(0.0, source);
-    while (!queue.empty())
-    {
-      const auto [d, v] = queue.top();
-      queue.pop();
-      if (d > distance[v])
-      {
-        continue;
-      }
+    search.Visit({ vertices[row] }, radius, [&](int v, double d) {
       sampleTriplets.emplace_back(sample, extend(v), FallOff(d, radius));
       if (roiRow[v] >= 0 && d < blendRadius)
       {
         blendTriplets.emplace_back(roiRow[v], sample, FallOff(d, blendRadius));
         covered[roiRow[v]] = covered[roiRow[v]] || d <= spacing;
       }
-      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
-      {
-        const double candidate = d + (positions[*w] - positions[v]).norm();
-        if (candidate < distance[*w])
-        {
-          if (distance[*w] == radius)
-          {
-            touched.push_back(*w);
-          }
-          distance[*w] = candidate;
-          queue.emplace(candidate, *w);
-        }
-      }
-    }
-    for (int v : touched)
-    {
-      distance[v] = radius;
-    }
+    });
   }
   this->NumberOfSupportVertices = static_cast<int>(extendedVertices.size());
   this->SampleWeights.resize(samples, this->NumberOfSupportVertices);
