@@ -184,7 +184,8 @@ public:
   /**
    * Implicit mode: rescale each transformed differential coordinate to its rest length and
    * solve the Laplacian system once more (Sorkine et al. 2004). The linearized similarities
-   * otherwise grow details under large rotations. Default on.
+   * otherwise change the size of details under large rotations. Default off: the paper's
+   * method, whose handle moves cost a small dense product; on, a move costs one more solve.
    */
   vtkSetMacro(PreserveDetailScale, vtkTypeBool);
   vtkGetMacro(PreserveDetailScale, vtkTypeBool);
@@ -280,7 +281,7 @@ protected:
   int RotationMode = ROTATION_NONE;
   double NormalSmoothingRadius = 0.0;
   int NumberOfIterations = 1;
-  vtkTypeBool PreserveDetailScale = 1;
+  vtkTypeBool PreserveDetailScale = 0;
   int Solver = SOLVER_CHOLMOD;
   vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;

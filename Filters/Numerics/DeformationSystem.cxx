@@ -62,7 +62,44 @@ std::string DeformationSystem::Build(
   }
   normalMatrix.makeCompressed();
   this->RestRightHandSide = this->RegionOperator.transpose() * (this->RestDelta - this->FixedPart);
-  return this->Factor.Factorize(normalMatrix, options.Backend);
+  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend);
+  if (!error.empty())
+  {
+    return error;
+  }
+
+  // The rest solution and the handle responses, in one multi-column solve.
+  const int groups = region.NumberOfHandleGroups;
+  Eigen::MatrixXd rhs(n, 3 + 4 * groups);
+  rhs.leftCols<3>() =
+    this->RestRightHandSide + this->ConstraintRightHandSide(std::vector<AffineMap>(groups, AffineMap::Zero()));
+  for (int g = 0; g < groups; ++g)
+  {
+    rhs.middleCols<4>(3 + 4 * g) = this->HandleBasis(g);
+  }
+  const Eigen::MatrixXd solution = this->Factor.Solve(rhs);
+  this->RestSolution = solution.leftCols<3>();
+  this->GroupResponses.resize(groups);
+  for (int g = 0; g < groups; ++g)
+  {
+    this->GroupResponses[g] = solution.middleCols<4>(3 + 4 * g);
+  }
+  return {};
+}
+
+Eigen::MatrixXd DeformationSystem::HandleBasis(int group) const
+{
+  const int n = this->GetNumberOfUnknowns();
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(n, 4);
+  for (int k = 0; k < n; ++k)
+  {
+    if (this->HandleGroups[k] == group)
+    {
+      basis.row(k) << this->RestPositions.row(k), 1.0;
+      basis.row(k) *= this->SquaredWeights[k];
+    }
+  }
+  return basis;
 }
 
 Positions DeformationSystem::ConstraintRightHandSide(const std::vector<AffineMap>& handleMaps) const
@@ -85,6 +122,17 @@ Positions DeformationSystem::ConstraintRightHandSide(const std::vector<AffineMap
 }
 
 Positions DeformationSystem::Solve(const std::vector<AffineMap>& handleMaps) const
+{
+  Positions solution = this->RestSolution;
+  for (std::size_t g = 0; g < this->GroupResponses.size(); ++g)
+  {
+    const AffineMap map = g < handleMaps.size() ? handleMaps[g] : AffineMap::Identity();
+    solution.noalias() += this->GroupResponses[g] * map.transpose();
+  }
+  return solution;
+}
+
+Positions DeformationSystem::SolveDirect(const std::vector<AffineMap>& handleMaps) const
 {
   return this->Factor.Solve(this->RestRightHandSide + this->ConstraintRightHandSide(handleMaps));
 }

@@ -5,6 +5,11 @@
 // blends continuously into the fixed mesh. Handle and anchor vertices add soft constraints
 // w_i v'_i = w_i u_i. The normal equations (A^T A) v' = A^T b are factored once per region; a
 // handle move, or new (rotated) differential coordinates, only change the right-hand side.
+//
+// With the rest differential coordinates the solution is affine in each handle group's map
+// [M | t]: v' = v'_0 + sum_g R_g [M_g | t_g]^T, with R_g = (A^T A)^-1 W_g^2 [v_g | 1]. Build
+// solves for v'_0 and the n x 4 responses R_g once, so a handle move is a small dense product
+// instead of two sparse triangular solves.
 #ifndef LaplacianEditing_DeformationSystem_h
 #define LaplacianEditing_DeformationSystem_h
 
@@ -42,9 +47,16 @@ public:
   std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
     const DeformationOptions& options);
 
+  /// W_g^2 [v_g | 1]: the n x 4 right-hand side of handle group g's response.
+  Eigen::MatrixXd HandleBasis(int group) const;
+
   /// Reconstructs the ROI from its rest differential coordinates, moving each handle group g
-  /// by handleMaps[g] (a missing map means identity). Rows follow region.Vertices.
+  /// by handleMaps[g] (a missing map means identity). Rows follow region.Vertices. Uses the
+  /// precomputed responses: O(n) per handle group.
   Positions Solve(const std::vector<AffineMap>& handleMaps) const;
+
+  /// The same through the factor's triangular solves (the reference for Solve).
+  Positions SolveDirect(const std::vector<AffineMap>& handleMaps) const;
 
   /// The same with other differential coordinates, for example rotated ones.
   Positions SolveWithDifferentialCoordinates(
@@ -65,6 +77,9 @@ public:
   const Positions& GetFixedPart() const { return this->FixedPart; }
   /// Squared constraint weight of each ROI vertex (0 for free vertices).
   const Eigen::VectorXd& GetSquaredWeights() const { return this->SquaredWeights; }
+  /// Handle group of each ROI vertex, -1 for others.
+  const std::vector<int>& GetHandleGroups() const { return this->HandleGroups; }
+  int GetNumberOfHandleGroups() const { return static_cast<int>(this->GroupResponses.size()); }
   int GetNumberOfUnknowns() const { return static_cast<int>(this->RestPositions.rows()); }
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
@@ -78,6 +93,9 @@ private:
   std::vector<int> HandleGroups;
   // L^T (delta - fixed part) for the rest differential coordinates: constant per region.
   Positions RestRightHandSide;
+  // The solution with every handle map zero, and each group's n x 4 response.
+  Positions RestSolution;
+  std::vector<Eigen::MatrixXd> GroupResponses;
 };
 }
 

@@ -135,10 +135,56 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
   normalMatrix.makeCompressed();
   this->KnownRightHandSide = transposed * known;
-  return this->Factor.Factorize(normalMatrix, backend);
+  const std::string error = this->Factor.Factorize(normalMatrix, backend);
+  if (!error.empty())
+  {
+    return error;
+  }
+
+  // The rest solution and the responses, in one multi-column solve. Column 1 + 12 g + 4 c + j
+  // holds the constraint term of entry (c, j) of group g's map.
+  const int groups = plain.GetNumberOfHandleGroups();
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(3 * n, 1 + 12 * groups);
+  rhs.col(0) = this->KnownRightHandSide +
+    Interleave(plain.ConstraintRightHandSide(std::vector<AffineMap>(groups, AffineMap::Zero())));
+  for (int g = 0; g < groups; ++g)
+  {
+    const Eigen::MatrixXd basis = plain.HandleBasis(g);
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        for (int k = 0; k < n; ++k)
+        {
+          rhs(3 * k + c, 1 + 12 * g + 4 * c + j) = basis(k, j);
+        }
+      }
+    }
+  }
+  const Eigen::MatrixXd solution = this->Factor.Solve(rhs);
+  this->RestSolution = solution.col(0);
+  this->GroupResponses.resize(groups);
+  for (int g = 0; g < groups; ++g)
+  {
+    this->GroupResponses[g] = solution.middleCols<12>(1 + 12 * g);
+  }
+  return {};
 }
 
-Positions ImplicitSimilaritySystem::Solve(
+Positions ImplicitSimilaritySystem::Solve(const std::vector<AffineMap>& handleMaps) const
+{
+  Eigen::VectorXd solution = this->RestSolution;
+  for (std::size_t g = 0; g < this->GroupResponses.size(); ++g)
+  {
+    const Eigen::Matrix<double, 3, 4, Eigen::RowMajor> map =
+      g < handleMaps.size() ? handleMaps[g] : AffineMap::Identity();
+    solution.noalias() +=
+      this->GroupResponses[g] * Eigen::Map<const Eigen::Matrix<double, 12, 1>>(map.data());
+  }
+  return Deinterleave(solution);
+}
+
+Positions ImplicitSimilaritySystem::SolveDirect(
   const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const
 {
   const Eigen::VectorXd rhs =

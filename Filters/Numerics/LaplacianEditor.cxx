@@ -69,7 +69,7 @@ std::string LaplacianEditor::Solve(
   }
   if (rotation.Mode == RotationMode::Implicit)
   {
-    roiPositions = this->Implicit->Solve(this->System, handleMaps);
+    roiPositions = this->Implicit->Solve(handleMaps);
     if (rotation.PreserveDetailScale)
     {
       roiPositions = this->System.SolveWithDifferentialCoordinates(

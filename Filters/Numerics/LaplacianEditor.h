@@ -37,7 +37,7 @@ struct RotationOptions
   /// Explicit mode: reference-rotate-solve passes (1 is the paper's method).
   int Iterations = 1;
   /// Implicit mode: the rescaling pass.
-  bool PreserveDetailScale = true;
+  bool PreserveDetailScale = false;
 };
 
 class LaplacianEditor

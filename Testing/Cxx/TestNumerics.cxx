@@ -2,6 +2,7 @@
 #include "DeformationSystem.h"
 #include "EditRegion.h"
 #include "GeodesicDistance.h"
+#include "ImplicitSimilaritySystem.h"
 #include "LaplacianOperator.h"
 #include "SurfaceMesh.h"
 
@@ -243,6 +244,33 @@ TEST_P(DeformationSystemTest, BackendsAgree)
   Prepare(b, 0.05, 0.35, options);
   const std::vector<AffineMap> maps = { Translation(Vector3(0.1, 0.0, 0.2)) };
   EXPECT_LT((a.System.Solve(maps) - b.System.Solve(maps)).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+TEST_P(DeformationSystemTest, PrecomputedResponsesMatchDirectSolves)
+{
+  // Two handle groups with general affine maps (rotation, scale, shear, translation): the
+  // precomputed path must agree with the triangular solves to 1e-10 relative, in the Laplacian
+  // system and in the implicit one.
+  Edit edit{ MakeGrid(30, 30, 1.0, Bumps) };
+  std::vector<int> labels(edit.Mesh.GetNumberOfVertices(), 1);
+  for (int v = 0; v < edit.Mesh.GetNumberOfVertices(); ++v)
+  {
+    const Vector3& p = edit.Mesh.GetPositions()[v];
+    labels[v] = p.x() < 0.05 ? 0 : (p.x() > 0.95 ? 2 : (std::abs(p.x() - 0.5) < 0.04 ? 3 : 1));
+  }
+  ASSERT_EQ(SelectLabeledRegion(edit.Mesh, labels, 0.1, edit.Region), "");
+  ASSERT_EQ(edit.System.Build(edit.Mesh, edit.Region, this->Options()), "");
+  ImplicitSimilaritySystem implicit;
+  ASSERT_EQ(implicit.Build(edit.Mesh, edit.Region, edit.System, SolverBackend::Cholmod), "");
+  AffineMap first, second;
+  first << 0.9, -0.3, 0.1, 0.2, 0.35, 0.95, 0.05, -0.1, -0.1, 0.02, 1.1, 0.3;
+  second << 1.0, 0.2, 0.0, -0.05, -0.2, 1.0, 0.1, 0.0, 0.0, -0.1, 0.9, 0.15;
+  const std::vector<AffineMap> maps = { first, second };
+  auto relative = [](const Positions& fast, const Positions& direct) {
+    return (fast - direct).cwiseAbs().maxCoeff() / direct.cwiseAbs().maxCoeff();
+  };
+  EXPECT_LT(relative(edit.System.Solve(maps), edit.System.SolveDirect(maps)), 1e-10);
+  EXPECT_LT(relative(implicit.Solve(maps), implicit.SolveDirect(edit.System, maps)), 1e-10);
 }
 
 INSTANTIATE_TEST_SUITE_P(WeightsAndOrders, DeformationSystemTest,
