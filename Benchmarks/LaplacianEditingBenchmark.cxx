@@ -1,21 +1,33 @@
 // Benchmark of setup and handle moves; prints one JSON line.
 //
-//   LaplacianEditingBenchmark MESH [--vertex V | --point X Y Z] [--roi F] [--handle F]
+//   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F] [--handle F]
 //     [--translate DX DY DZ] [--moves N] [--order 1|2] [--weights uniform|cotangent]
-//     [--solver cholmod|ldlt] [--mode none|explicit|implicit] [--iterations K] [--no-rescale]
+//     [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
+//     [--mode none|explicit|implicit] [--iterations K] [--no-rescale]
 //
+// --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
+// scaling curve). --vertex largest picks the first vertex of the largest connected component.
 // Radii (--roi, default 0.25; --handle, default 0.03) and the translation (default 0 0 0.05)
-// are fractions of the bounding-box diagonal. Each move sets a new handle transform and
+// are fractions of the bounding-box diagonal. The JSON line also gives the peak resident memory
+// of the process and the BLAS library that CHOLMOD runs on. Each move sets a new handle transform and
 // updates the filter; the move time is the filter's solve and output time, and the wall time
 // of the whole Update() is reported too.
 #include "MeshReader.h"
 
 #include "vtkLaplacianDeformationFilter.h"
 
+#include "vtkIdTypeArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataConnectivityFilter.h"
+#include "vtkSphereSource.h"
 #include "vtkTransform.h"
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <fstream>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -29,6 +41,65 @@ double Median(std::vector<double> values)
   std::sort(values.begin(), values.end());
   return values[values.size() / 2];
 }
+
+double PeakMemoryMegabytes()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+// The BLAS library mapped into this process: CHOLMOD's supernodes run on it.
+std::string LoadedBlas()
+{
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+  {
+    for (const char* name : { "openblas", "libblas", "mkl", "blis", "atlas" })
+    {
+      if (line.find(name) != std::string::npos)
+      {
+        return line.substr(line.find('/'));
+      }
+    }
+  }
+  return "none";
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(double vertices)
+{
+  vtkNew<vtkSphereSource> sphere;
+  const int phi = std::max(8, static_cast<int>(std::sqrt(vertices / 2.0)));
+  sphere->SetPhiResolution(phi);
+  sphere->SetThetaResolution(2 * phi);
+  sphere->Update();
+  return sphere->GetOutput();
+}
+
+vtkIdType FirstVertexOfLargestComponent(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyDataConnectivityFilter> connectivity;
+  connectivity->SetInputData(mesh);
+  connectivity->SetExtractionModeToAllRegions();
+  connectivity->ColorRegionsOn();
+  connectivity->Update();
+  vtkIdTypeArray* sizes = connectivity->GetRegionSizes();
+  vtkIdType largest = 0;
+  for (vtkIdType r = 1; r < sizes->GetNumberOfTuples(); ++r)
+  {
+    largest = sizes->GetValue(r) > sizes->GetValue(largest) ? r : largest;
+  }
+  vtkDataArray* regions = connectivity->GetOutput()->GetPointData()->GetArray("RegionId");
+  for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
+  {
+    if (regions->GetTuple1(i) == largest)
+    {
+      return mesh->FindPoint(connectivity->GetOutput()->GetPoint(i));
+    }
+  }
+  return 0;
+}
 }
 
 int main(int argc, char* argv[])
@@ -38,11 +109,16 @@ int main(int argc, char* argv[])
     std::cerr << "usage: " << argv[0]
               << " MESH [--vertex V | --point X Y Z] [--roi F] [--handle F] [--translate DX DY DZ]"
                  " [--moves N] [--order 1|2] [--weights uniform|cotangent] [--solver cholmod|ldlt]"
-                 " [--mode none|explicit|implicit] [--iterations K] [--no-rescale]\n";
+                 " [--ordering auto|amd|metis|nesdis] [--mode none|explicit|implicit] [--iterations K]"
+                 " [--no-rescale]\n";
     return EXIT_FAILURE;
   }
   std::string error;
-  vtkSmartPointer<vtkPolyData> mesh = MeshReader::Read(argv[1], error);
+  const std::string meshName =
+    std::string(argv[1]) == "--sphere" && argc > 2 ? "sphere-" + std::string(argv[2]) : argv[1];
+  vtkSmartPointer<vtkPolyData> mesh = meshName.rfind("sphere-", 0) == 0
+    ? Sphere(std::atof(argv[2]))
+    : MeshReader::Read(argv[1], error);
   if (!mesh)
   {
     std::cerr << "error: " << error << "\n";
@@ -54,12 +130,17 @@ int main(int argc, char* argv[])
   double roi = 0.25, handle = 0.03, translate[3] = { 0.0, 0.0, 0.05 };
   int moves = 20;
   vtkNew<vtkLaplacianDeformationFilter> filter;
-  for (int i = 2; i < argc; ++i)
+  bool largest = false;
+  for (int i = meshName == argv[1] ? 2 : 3; i < argc; ++i)
   {
     const std::string arg = argv[i];
     auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
     if (arg == "--vertex")
-      vertex = std::atol(next().c_str());
+    {
+      const std::string value = next();
+      largest = value == "largest";
+      vertex = largest ? 0 : std::atol(value.c_str());
+    }
     else if (arg == "--point")
     {
       usePoint = true;
@@ -86,6 +167,11 @@ int main(int argc, char* argv[])
       const std::string mode = next();
       filter->SetRotationMode(mode == "explicit" ? 1 : (mode == "implicit" ? 2 : 0));
     }
+    else if (arg == "--ordering")
+    {
+      const std::string ordering = next();
+      filter->SetOrdering(ordering == "amd" ? 1 : ordering == "metis" ? 2 : ordering == "nesdis" ? 3 : 0);
+    }
     else if (arg == "--iterations")
       filter->SetNumberOfIterations(std::atoi(next().c_str()));
     else if (arg == "--no-rescale")
@@ -95,6 +181,10 @@ int main(int argc, char* argv[])
       std::cerr << "unknown argument " << arg << "\n";
       return EXIT_FAILURE;
     }
+  }
+  if (largest)
+  {
+    vertex = FirstVertexOfLargestComponent(mesh);
   }
   if (!usePoint)
   {
@@ -139,18 +229,22 @@ int main(int argc, char* argv[])
   const char* weights = filter->GetLaplacianWeights() == 1 ? "cotangent" : "uniform";
   const char* solver = filter->GetSolver() == 0 ? "cholmod" : "ldlt";
   const char* modes[] = { "none", "explicit", "implicit" };
-  std::cout << std::setprecision(6) << "{\"mesh\": \"" << argv[1] << "\", \"vertices\": "
+  const char* orderings[] = { "auto", "amd", "metis", "nesdis" };
+  std::cout << std::setprecision(6) << "{\"mesh\": \"" << meshName << "\", \"vertices\": "
             << mesh->GetNumberOfPoints() << ", \"roi_vertices\": " << filter->GetNumberOfROIVertices()
             << ", \"handle_vertices\": " << filter->GetNumberOfHandleVertices()
             << ", \"order\": " << filter->GetOperatorOrder() << ", \"weights\": \"" << weights
-            << "\", \"solver\": \"" << solver << "\", \"mode\": \""
+            << "\", \"solver\": \"" << solver << "\", \"ordering\": \""
+            << orderings[filter->GetOrdering()] << "\", \"mode\": \""
             << modes[filter->GetRotationMode()] << "\", \"iterations\": "
             << filter->GetNumberOfIterations() << ", \"setup_seconds\": " << setup
             << ", \"analysis_seconds\": " << analysis
             << ", \"factorization_seconds\": " << factorization
             << ", \"move_median_seconds\": " << Median(solveTimes)
             << ", \"update_median_seconds\": " << Median(updateTimes) << ", \"moves\": " << moves
-            << ", \"factorizations\": " << filter->GetNumberOfFactorizations() << "}\n";
+            << ", \"factorizations\": " << filter->GetNumberOfFactorizations()
+            << ", \"peak_memory_mb\": " << PeakMemoryMegabytes() << ", \"blas\": \"" << LoadedBlas()
+            << "\"}\n";
   // Moving the handle must never refactor.
   return filter->GetNumberOfFactorizations() == factorizations ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -18,9 +18,11 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -63,46 +65,26 @@ bool IsIntegerType(int type)
   }
 }
 
-// Area-weighted vertex normals of the surface mesh at the given vertex positions.
-std::vector<le::Vector3> ComputeVertexNormals(
-  const le::SurfaceMesh& mesh, const std::vector<le::Vector3>& positions)
-{
-  std::vector<le::Vector3> normals(positions.size(), le::Vector3::Zero());
-  for (const auto& tri : mesh.GetTriangles())
-  {
-    const le::Vector3 n =
-      (positions[tri[1]] - positions[tri[0]]).cross(positions[tri[2]] - positions[tri[0]]);
-    for (int v : tri)
-    {
-      normals[v] += n;
-    }
-  }
-  for (auto& n : normals)
-  {
-    n.normalize();
-  }
-  return normals;
-}
-
-// Replaces a normals array by a recomputed one of the same name and type, so that normals are
-// never stale after the points moved.
+// Copies a normals array and recomputes the tuples listed in `ids`: normals near the edit are
+// fresh, and all others stay bit-identical to the input's.
 template <typename NormalOf>
-void ReplaceNormals(vtkDataSetAttributes* attributes, vtkIdType count, NormalOf normalOf)
+void RefreshNormals(vtkDataSetAttributes* attributes, const std::vector<vtkIdType>& ids,
+  NormalOf normalOf)
 {
   vtkDataArray* stale = attributes->GetNormals();
-  if (!stale)
+  if (!stale || stale->GetNumberOfComponents() != 3)
   {
     return;
   }
   vtkSmartPointer<vtkDataArray> fresh = vtk::TakeSmartPointer(stale->NewInstance());
-  fresh->SetName(stale->GetName());
-  fresh->SetNumberOfComponents(3);
-  fresh->SetNumberOfTuples(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    const le::Vector3 n = normalOf(i);
-    fresh->SetTuple3(i, n[0], n[1], n[2]);
-  }
+  fresh->DeepCopy(stale);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
+    {
+      const le::Vector3 n = normalOf(r).normalized();
+      fresh->SetTuple3(ids[r], n[0], n[1], n[2]);
+    }
+  });
   attributes->SetNormals(fresh);
 }
 }
@@ -118,7 +100,22 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   std::shared_ptr<le::SurfaceMesh> Mesh = std::make_shared<le::SurfaceMesh>();
   le::EditRegion Region;
   le::LaplacianEditor Editor;
-  std::vector<int> LocalOfVertex;
+  // Per region: the ROI row of each surface vertex (-1 outside), the input points in the ROI
+  // with their row, and the EditRole array.
+  std::vector<int> RowOfVertex;
+  std::vector<std::pair<vtkIdType, int>> RoiPoints;
+  vtkSmartPointer<vtkUnsignedCharArray> Roles;
+  // Per region: the points and cells whose normals the edit can change, the triangles around
+  // those points (and each mesh triangle's slot among them, -1 if none), and the surface
+  // vertices of each such cell (offsets into CellVertices).
+  std::vector<vtkIdType> NormalPoints;
+  std::vector<int> NormalTriangles;
+  std::vector<int> TriangleSlot;
+  std::vector<vtkIdType> NormalCells;
+  std::vector<int> CellVertexOffsets;
+  std::vector<int> CellVertices;
+
+  void FindNormalsToRefresh(vtkPolyData* input);
   // The core works on coordinates centred on the input's bounding box and scaled to a unit
   // diagonal, so that offset or tiny models keep their precision.
   le::Vector3 Center = le::Vector3::Zero();
@@ -136,6 +133,65 @@ struct vtkLaplacianDeformationFilter::vtkInternals
     this->Region = le::EditRegion();
   }
 };
+
+void vtkLaplacianDeformationFilter::vtkInternals::FindNormalsToRefresh(vtkPolyData* input)
+{
+  // A vertex normal changes when a vertex of an incident triangle moves: the ROI and its ring.
+  const auto& vertexOfPoint = this->Mesh->GetVertexOfPoint();
+  std::vector<char> near(this->Mesh->GetNumberOfVertices(), 0);
+  for (int v : this->Region.Vertices)
+  {
+    near[v] = 1;
+    for (const int* w = this->Mesh->NeighborsBegin(v); w != this->Mesh->NeighborsEnd(v); ++w)
+    {
+      near[*w] = 1;
+    }
+  }
+  this->NormalPoints.clear();
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(vertexOfPoint.size()); ++i)
+  {
+    if (near[vertexOfPoint[i]])
+    {
+      this->NormalPoints.push_back(i);
+    }
+  }
+  this->NormalTriangles.clear();
+  this->TriangleSlot.assign(this->Mesh->GetNumberOfTriangles(), -1);
+  for (int v = 0; v < this->Mesh->GetNumberOfVertices(); ++v)
+  {
+    for (const int* t = this->Mesh->TrianglesBegin(v); near[v] && t != this->Mesh->TrianglesEnd(v); ++t)
+    {
+      if (this->TriangleSlot[*t] < 0)
+      {
+        this->TriangleSlot[*t] = static_cast<int>(this->NormalTriangles.size());
+        this->NormalTriangles.push_back(*t);
+      }
+    }
+  }
+  // A polygon normal changes when one of its corners is in the ROI.
+  this->NormalCells.clear();
+  this->CellVertexOffsets.assign(1, 0);
+  this->CellVertices.clear();
+  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    const bool moves = std::any_of(
+      ids, ids + size, [&](vtkIdType id) { return this->RowOfVertex[vertexOfPoint[id]] >= 0; });
+    if (moves)
+    {
+      this->NormalCells.push_back(firstPoly + cells->GetCurrentCellId());
+      for (vtkIdType c = 0; c < size; ++c)
+      {
+        this->CellVertices.push_back(vertexOfPoint[ids[c]]);
+      }
+      this->CellVertexOffsets.push_back(static_cast<int>(this->CellVertices.size()));
+    }
+  }
+}
 
 vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
   : Internals(new vtkInternals)
@@ -280,7 +336,7 @@ int vtkLaplacianDeformationFilter::RequestData(
     this->HandleCenter[2], this->HandleRadius, this->ROIRadius, this->AnchorPadding,
     this->HandleWeight, this->AnchorWeight, static_cast<double>(this->LaplacianWeights),
     static_cast<double>(this->OperatorOrder), static_cast<double>(this->Solver),
-    static_cast<double>(this->MergeCoincidentPoints) };
+    static_cast<double>(this->MergeCoincidentPoints), static_cast<double>(this->Ordering) };
   const std::string arrayName = selection && selection->GetName() ? selection->GetName() : "";
 
   if (key != internals.CacheKey || arrayName != internals.CacheArrayName)
@@ -365,17 +421,34 @@ int vtkLaplacianDeformationFilter::RequestData(
     options.AnchorWeight = this->AnchorWeight;
     options.Backend = this->Solver == SOLVER_CHOLMOD ? le::SolverBackend::Cholmod
                                                      : le::SolverBackend::SimplicialLDLT;
+    options.Ordering = static_cast<le::FillOrdering>(this->Ordering);
     error = internals.Editor.Build(internals.Mesh, internals.Region, options);
     this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
     if (!error.empty())
     {
       return fail("Cannot factor the editing system: " + error + ".");
     }
-    internals.LocalOfVertex.assign(internals.Mesh->GetNumberOfVertices(), -1);
+    std::vector<int>& rowOfVertex = internals.RowOfVertex;
+    rowOfVertex.assign(internals.Mesh->GetNumberOfVertices(), -1);
     for (int k = 0; k < internals.Region.GetNumberOfVertices(); ++k)
     {
-      internals.LocalOfVertex[internals.Region.Vertices[k]] = k;
+      rowOfVertex[internals.Region.Vertices[k]] = k;
     }
+    internals.RoiPoints.clear();
+    internals.Roles = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    internals.Roles->SetName("EditRole");
+    internals.Roles->SetNumberOfTuples(numberOfPoints);
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      const int k = rowOfVertex[vertexOfPoint[i]];
+      if (k >= 0)
+      {
+        internals.RoiPoints.emplace_back(i, k);
+      }
+      internals.Roles->SetValue(
+        i, static_cast<unsigned char>(k >= 0 ? internals.Region.Roles[k] : le::VertexRole::Fixed));
+    }
+    internals.FindNormalsToRefresh(input);
     internals.CacheKey = key;
     internals.CacheArrayName = arrayName;
     this->SetupTime = SecondsSince(start);
@@ -452,57 +525,61 @@ int vtkLaplacianDeformationFilter::RequestData(
   vtkNew<vtkPoints> outputPoints;
   outputPoints->SetDataType(inputPoints->GetDataType());
   outputPoints->DeepCopy(inputPoints);
-  const auto& vertexOfPoint = internals.Mesh->GetVertexOfPoint();
-  std::vector<le::Vector3> moved = internals.Mesh->GetPositions();
-  for (int k = 0; k < solution.rows(); ++k)
-  {
-    moved[internals.Region.Vertices[k]] = solution.row(k).transpose();
-  }
-  vtkNew<vtkUnsignedCharArray> roles;
-  roles->SetName("EditRole");
-  roles->SetNumberOfTuples(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const int k = internals.LocalOfVertex[vertexOfPoint[i]];
-    if (k >= 0)
+  const auto& roiPoints = internals.RoiPoints;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(roiPoints.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType r = begin; r < end; ++r)
     {
-      const le::Vector3 p = internals.Denormalize(solution.row(k).transpose());
-      outputPoints->SetPoint(i, p.data());
+      const le::Vector3 p = internals.Denormalize(solution.row(roiPoints[r].second).transpose());
+      outputPoints->SetPoint(roiPoints[r].first, p.data());
     }
-    roles->SetValue(i,
-      static_cast<unsigned char>(k >= 0 ? internals.Region.Roles[k] : le::VertexRole::Fixed));
-  }
+  });
   output->SetPoints(outputPoints);
   this->SolveTime = SecondsSince(solveStart);
 
-  const std::vector<le::Vector3> vertexNormals = ComputeVertexNormals(*internals.Mesh, moved);
-  ReplaceNormals(output->GetPointData(), numberOfPoints,
-    [&](vtkIdType i) { return vertexNormals[vertexOfPoint[i]]; });
-  if (output->GetCellData()->GetNormals())
+  // Normals where the surface moved; the moved position of a vertex is its ROI row's.
+  const std::vector<le::Vector3>& rest = internals.Mesh->GetPositions();
+  auto position = [&](int v) -> le::Vector3 {
+    const int k = internals.RowOfVertex[v];
+    return k >= 0 ? le::Vector3(solution.row(k).transpose()) : rest[v];
+  };
+  const le::SurfaceMesh& mesh = *internals.Mesh;
+  if (output->GetPointData()->GetNormals())
   {
-    // Polygon normals from the same fan triangulation as the operator (verts and lines first).
-    const vtkIdType firstPoly = output->GetNumberOfVerts() + output->GetNumberOfLines();
-    std::vector<le::Vector3> cellNormals(output->GetNumberOfCells(), le::Vector3::Zero());
-    auto cells = vtk::TakeSmartPointer(output->GetPolys()->NewIterator());
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      cells->GetCurrentCell(size, ids);
-      le::Vector3& n = cellNormals[firstPoly + cells->GetCurrentCellId()];
-      for (vtkIdType c = 1; c + 1 < size; ++c)
+    // Each triangle's (area-weighted) normal once, then their sums around each point.
+    std::vector<le::Vector3> triangleNormals(internals.NormalTriangles.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType s = begin; s < end; ++s)
+        {
+          const auto& tri = mesh.GetTriangles()[internals.NormalTriangles[s]];
+          triangleNormals[s] =
+            (position(tri[1]) - position(tri[0])).cross(position(tri[2]) - position(tri[0]));
+        }
+      });
+    RefreshNormals(output->GetPointData(), internals.NormalPoints, [&](vtkIdType r) {
+      const int v = mesh.GetVertexOfPoint()[internals.NormalPoints[r]];
+      le::Vector3 n = le::Vector3::Zero();
+      for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
       {
-        n += (moved[vertexOfPoint[ids[c]]] - moved[vertexOfPoint[ids[0]]])
-               .cross(moved[vertexOfPoint[ids[c + 1]]] - moved[vertexOfPoint[ids[0]]]);
+        n += triangleNormals[internals.TriangleSlot[*t]];
       }
-      n.normalize();
-    }
-    ReplaceNormals(output->GetCellData(), output->GetNumberOfCells(),
-      [&](vtkIdType i) { return cellNormals[i]; });
+      return n;
+    });
   }
+  RefreshNormals(output->GetCellData(), internals.NormalCells, [&](vtkIdType r) {
+    const int* corners = internals.CellVertices.data() + internals.CellVertexOffsets[r];
+    const int size = internals.CellVertexOffsets[r + 1] - internals.CellVertexOffsets[r];
+    le::Vector3 n = le::Vector3::Zero();
+    for (int c = 1; c + 1 < size; ++c)
+    {
+      n += (position(corners[c]) - position(corners[0]))
+             .cross(position(corners[c + 1]) - position(corners[0]));
+    }
+    return n;
+  });
   if (this->GenerateEditRoles)
   {
-    output->GetPointData()->AddArray(roles);
+    output->GetPointData()->AddArray(internals.Roles);
   }
 
   this->NumberOfROIVertices = internals.Region.GetNumberOfVertices();
@@ -532,6 +609,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "PreserveDetailScale: " << this->PreserveDetailScale << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
+  os << indent << "Ordering: " << this->Ordering << "\n";
   os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
   os << indent << "GenerateEditRoles: " << this->GenerateEditRoles << "\n";
   os << indent << "NumberOfHandleTransforms: " << this->Internals->HandleTransforms.size() << "\n";

@@ -204,6 +204,24 @@ public:
   static bool IsCholmodAvailable();
   ///@}
 
+  enum Orderings
+  {
+    ORDERING_AUTOMATIC = 0,
+    ORDERING_AMD = 1,
+    ORDERING_METIS = 2,
+    ORDERING_NESTED_DISSECTION = 3
+  };
+
+  ///@{
+  /**
+   * CHOLMOD's fill-reducing ordering: automatic (default; CHOLMOD tries AMD and falls back to
+   * METIS when AMD fills poorly), AMD, METIS or CHOLMOD's nested dissection. SimplicialLDLT
+   * always uses AMD.
+   */
+  vtkSetClampMacro(Ordering, int, ORDERING_AUTOMATIC, ORDERING_NESTED_DISSECTION);
+  vtkGetMacro(Ordering, int);
+  ///@}
+
   ///@{
   /**
    * Treat input points at the same position as one surface vertex. Default on.
@@ -283,6 +301,7 @@ protected:
   int NumberOfIterations = 1;
   vtkTypeBool PreserveDetailScale = 0;
   int Solver = SOLVER_CHOLMOD;
+  int Ordering = ORDERING_AUTOMATIC;
   vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;
 

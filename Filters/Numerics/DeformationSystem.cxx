@@ -62,7 +62,7 @@ std::string DeformationSystem::Build(
   }
   normalMatrix.makeCompressed();
   this->RestRightHandSide = this->RegionOperator.transpose() * (this->RestDelta - this->FixedPart);
-  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend);
+  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering);
   if (!error.empty())
   {
     return error;

@@ -38,6 +38,7 @@ struct DeformationOptions
   /// from the handle (Section 6).
   double AnchorWeight = 1.0;
   SolverBackend Backend = SolverBackend::Cholmod;
+  FillOrdering Ordering = FillOrdering::Automatic;
 };
 
 class DeformationSystem

@@ -42,7 +42,7 @@ Eigen::Matrix<double, 3, 4> ApplyToDelta(const Eigen::Vector3d& delta)
 }
 
 std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
-  const DeformationSystem& plain, SolverBackend backend)
+  const DeformationSystem& plain, SolverBackend backend, FillOrdering ordering)
 {
   const int n = region.GetNumberOfVertices();
   this->NumberOfVertices = n;
@@ -135,7 +135,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
   normalMatrix.makeCompressed();
   this->KnownRightHandSide = transposed * known;
-  const std::string error = this->Factor.Factorize(normalMatrix, backend);
+  const std::string error = this->Factor.Factorize(normalMatrix, backend, ordering);
   if (!error.empty())
   {
     return error;

@@ -46,7 +46,8 @@ std::string LaplacianEditor::Prepare(const RotationOptions& rotation, bool& buil
   {
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
     const std::string error =
-      implicit->Build(*this->Mesh, this->Region, this->System, this->Options.Backend);
+      implicit->Build(
+      *this->Mesh, this->Region, this->System, this->Options.Backend, this->Options.Ordering);
     if (!error.empty())
     {
       return error;

@@ -52,10 +52,33 @@ double SecondsSince(Clock::time_point start)
 }
 
 template <typename Solver>
-std::unique_ptr<SparseCholesky::Backend> FactorWith(
-  const SparseMatrix& matrix, std::string& error, double& analysisSeconds, double& factorSeconds)
+void SetOrdering(Solver&, FillOrdering)
+{
+}
+
+#ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
+void SetOrdering(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver, FillOrdering ordering)
+{
+  cholmod_common& common = solver.cholmod();
+  if (ordering == FillOrdering::Automatic)
+  {
+    common.nmethods = 0;
+    return;
+  }
+  common.nmethods = 1;
+  common.method[0].ordering = ordering == FillOrdering::AMD ? CHOLMOD_AMD
+    : ordering == FillOrdering::METIS                       ? CHOLMOD_METIS
+                                                            : CHOLMOD_NESDIS;
+  common.postorder = 1;
+}
+#endif
+
+template <typename Solver>
+std::unique_ptr<SparseCholesky::Backend> FactorWith(const SparseMatrix& matrix,
+  FillOrdering ordering, std::string& error, double& analysisSeconds, double& factorSeconds)
 {
   auto backend = std::make_unique<EigenBackend<Solver>>();
+  SetOrdering(backend->Factor, ordering);
   Clock::time_point start = Clock::now();
   backend->Factor.analyzePattern(matrix);
   analysisSeconds = SecondsSince(start);
@@ -72,7 +95,8 @@ std::unique_ptr<SparseCholesky::Backend> FactorWith(
 }
 }
 
-std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend backend)
+std::string SparseCholesky::Factorize(
+  const SparseMatrix& matrix, SolverBackend backend, FillOrdering ordering)
 {
   this->Impl.reset();
   std::string error;
@@ -84,12 +108,12 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
   if (backend == SolverBackend::Cholmod)
   {
     this->Impl = FactorWith<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>(
-      matrix, error, this->AnalysisSeconds, this->FactorizationSeconds);
+      matrix, ordering, error, this->AnalysisSeconds, this->FactorizationSeconds);
     return error;
   }
 #endif
   this->Impl = FactorWith<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>(
-      matrix, error, this->AnalysisSeconds, this->FactorizationSeconds);
+      matrix, ordering, error, this->AnalysisSeconds, this->FactorizationSeconds);
   return error;
 }
 

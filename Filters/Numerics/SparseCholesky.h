@@ -20,6 +20,15 @@ enum class SolverBackend
   SimplicialLDLT
 };
 
+/// Fill-reducing orderings (CHOLMOD only; SimplicialLDLT always uses AMD).
+enum class FillOrdering
+{
+  Automatic,       // CHOLMOD's default: AMD, then METIS when AMD's fill is poor
+  AMD,             // approximate minimum degree
+  METIS,           // METIS nested dissection
+  NestedDissection // CHOLMOD's own nested dissection (METIS-based, constrained)
+};
+
 class SparseCholesky
 {
 public:
@@ -33,7 +42,8 @@ public:
 
   /// Factors a symmetric positive definite matrix (its lower triangle is read).
   /// Returns an error message, empty on success.
-  std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend);
+  std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend,
+    FillOrdering ordering = FillOrdering::Automatic);
 
   /// Solves for every column of `rhs` with the current factor.
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const;
