@@ -1,41 +1,63 @@
 // Benchmark of setup and handle moves; prints one JSON line.
 //
-//   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F] [--handle F]
-//     [--translate DX DY DZ] [--moves N] [--order 1|2] [--weights uniform|cotangent]
-//     [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
-//     [--mode none|explicit|implicit] [--iterations K] [--no-rescale]
+//   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F]
+//     [--handle F] [--translate DX DY DZ] [--moves N] [--order 1|2]
+//     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
+//     [--mode none|explicit|implicit] [--iterations K] [--rescale] [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
 // scaling curve). --vertex largest picks the first vertex of the largest connected component.
 // Radii (--roi, default 0.25; --handle, default 0.03) and the translation (default 0 0 0.05)
-// are fractions of the bounding-box diagonal. The JSON line also gives the peak resident memory
-// of the process and the BLAS library that CHOLMOD runs on. Each move sets a new handle transform and
-// updates the filter; the move time is the filter's solve and output time, and the wall time
-// of the whole Update() is reported too.
+// are fractions of the bounding-box diagonal. Each move sets a new handle transform and
+// updates the filter; "move" is the filter's solve and output time, "update" the wall time of
+// the whole Update(). "topology" is building the surface graph (once per input mesh), "setup"
+// the region's selection, assembly, factorization and precomputation (once per region). The line also gives the peak resident memory of the process and the BLAS
+// library that CHOLMOD runs on.
+//
+// --compare-cgal (when built with CGAL) measures, on the same welded mesh and the same
+// selection (the filter's ROI and handle vertices), our setup and moves in every mode against
+// CGAL's Surface_mesh_deformation with SRE-ARAP: preprocess(), deform(1) and deform(5) per move.
 #include "MeshReader.h"
 
 #include "vtkLaplacianDeformationFilter.h"
 
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCleanPolyData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataConnectivityFilter.h"
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
 
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_deformation.h>
+#endif
+
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace
 {
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
 double Median(std::vector<double> values)
 {
   std::sort(values.begin(), values.end());
@@ -100,151 +122,336 @@ vtkIdType FirstVertexOfLargestComponent(vtkPolyData* mesh)
   }
   return 0;
 }
+
+struct Options
+{
+  std::string Mesh;
+  double SphereVertices = 0.0;
+  vtkIdType Vertex = 0;
+  bool LargestComponent = false;
+  bool UsePoint = false;
+  double Point[3] = { 0.0, 0.0, 0.0 };
+  double ROI = 0.25;
+  double Handle = 0.03;
+  double Translate[3] = { 0.0, 0.0, 0.05 };
+  int Moves = 20;
+  int Order = 1;
+  int Weights = vtkLaplacianDeformationFilter::WEIGHTS_UNIFORM;
+  int Solver = vtkLaplacianDeformationFilter::SOLVER_CHOLMOD;
+  int Ordering = vtkLaplacianDeformationFilter::ORDERING_AUTOMATIC;
+  int Mode = vtkLaplacianDeformationFilter::ROTATION_NONE;
+  int Iterations = 1;
+  bool Rescale = false;
+  bool CompareCGAL = false;
+};
+
+bool Parse(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+    auto pick = [](const std::string& value, std::vector<std::string> names) {
+      return static_cast<int>(
+        std::max<std::ptrdiff_t>(0, std::find(names.begin(), names.end(), value) - names.begin()) %
+        names.size());
+    };
+    if (arg == "--sphere")
+      options.SphereVertices = std::atof(next().c_str());
+    else if (arg == "--vertex")
+    {
+      const std::string value = next();
+      options.LargestComponent = value == "largest";
+      options.Vertex = options.LargestComponent ? 0 : std::atol(value.c_str());
+    }
+    else if (arg == "--point")
+    {
+      options.UsePoint = true;
+      for (double& c : options.Point)
+        c = std::atof(next().c_str());
+    }
+    else if (arg == "--roi")
+      options.ROI = std::atof(next().c_str());
+    else if (arg == "--handle")
+      options.Handle = std::atof(next().c_str());
+    else if (arg == "--translate")
+      for (double& c : options.Translate)
+        c = std::atof(next().c_str());
+    else if (arg == "--moves")
+      options.Moves = std::max(1, std::atoi(next().c_str()));
+    else if (arg == "--order")
+      options.Order = std::atoi(next().c_str());
+    else if (arg == "--weights")
+      options.Weights = pick(next(), { "uniform", "cotangent" });
+    else if (arg == "--solver")
+      options.Solver = pick(next(), { "cholmod", "ldlt" });
+    else if (arg == "--ordering")
+      options.Ordering = pick(next(), { "auto", "amd", "metis", "nesdis" });
+    else if (arg == "--mode")
+      options.Mode = pick(next(), { "none", "explicit", "implicit" });
+    else if (arg == "--iterations")
+      options.Iterations = std::atoi(next().c_str());
+    else if (arg == "--rescale")
+      options.Rescale = true;
+    else if (arg == "--compare-cgal")
+      options.CompareCGAL = true;
+    else if (arg[0] != '-' && options.Mesh.empty())
+      options.Mesh = arg;
+    else
+    {
+      std::cerr << "unknown argument " << arg << "\n";
+      return false;
+    }
+  }
+  return !options.Mesh.empty() || options.SphereVertices > 0.0;
+}
+
+struct Measurement
+{
+  int ROIVertices = 0;
+  int HandleVertices = 0;
+  double Topology = 0.0;
+  double Setup = 0.0;
+  double Analysis = 0.0;
+  double Factorization = 0.0;
+  double Move = 0.0;
+  double Update = 0.0;
+  bool Refactored = false;
+  vtkSmartPointer<vtkPolyData> Output;
+
+  std::string Json() const
+  {
+    std::ostringstream json;
+    json << std::setprecision(6) << "\"topology_seconds\": " << this->Topology
+         << ", \"setup_seconds\": " << this->Setup
+         << ", \"analysis_seconds\": " << this->Analysis
+         << ", \"factorization_seconds\": " << this->Factorization
+         << ", \"move_median_seconds\": " << this->Move
+         << ", \"update_median_seconds\": " << this->Update;
+    return json.str();
+  }
+};
+
+// Sets up the edit, then drags the handle to the translation in `options.Moves` steps.
+Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& options, int mode,
+  int iterations)
+{
+  const double diagonal = mesh->GetLength();
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetHandleCenter(center);
+  filter->SetROIRadius(options.ROI * diagonal);
+  filter->SetHandleRadius(options.Handle * diagonal);
+  filter->SetOperatorOrder(options.Order);
+  filter->SetLaplacianWeights(options.Weights);
+  filter->SetSolver(options.Solver);
+  filter->SetOrdering(options.Ordering);
+  filter->SetRotationMode(mode);
+  filter->SetNumberOfIterations(iterations);
+  filter->SetPreserveDetailScale(options.Rescale);
+  vtkNew<vtkTransform> transform;
+  filter->SetHandleTransform(transform);
+  filter->Update();
+
+  Measurement result;
+  result.ROIVertices = filter->GetNumberOfROIVertices();
+  result.HandleVertices = filter->GetNumberOfHandleVertices();
+  result.Topology = filter->GetTopologyTime();
+  result.Setup = filter->GetSetupTime();
+  result.Analysis = filter->GetAnalysisTime();
+  result.Factorization = filter->GetFactorizationTime();
+  const int factorizations = filter->GetNumberOfFactorizations();
+  if (factorizations == 0)
+  {
+    return result;
+  }
+  std::vector<double> moves, updates;
+  for (int move = 1; move <= options.Moves; ++move)
+  {
+    const double s = diagonal * move / options.Moves;
+    transform->Identity();
+    transform->Translate(s * options.Translate[0], s * options.Translate[1], s * options.Translate[2]);
+    const Clock::time_point start = Clock::now();
+    filter->Update();
+    updates.push_back(SecondsSince(start));
+    moves.push_back(filter->GetSolveTime());
+  }
+  result.Move = Median(moves);
+  result.Update = Median(updates);
+  result.Refactored = filter->GetNumberOfFactorizations() != factorizations;
+  result.Output = filter->GetOutput();
+  return result;
+}
+
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+// CGAL's SRE-ARAP on the same vertices, ROI and handle. Returns a JSON fragment.
+std::string MeasureCGAL(vtkPolyData* mesh, vtkDataArray* roles, const Options& options)
+{
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  using Vertex = Mesh::Vertex_index;
+  using Deformation = CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SRE_ARAP>;
+
+  Mesh surface;
+  std::vector<Vertex> vertices;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const double* p = mesh->GetPoint(i);
+    vertices.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
+  }
+  int skippedFaces = 0;
+  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    std::vector<Vertex> face;
+    for (vtkIdType c = 0; c < size; ++c)
+    {
+      face.push_back(vertices[ids[c]]);
+    }
+    skippedFaces += surface.add_face(face) == Mesh::null_face() ? 1 : 0;
+  }
+
+  Deformation deformation(surface);
+  std::vector<Vertex> handles;
+  std::vector<Kernel::Point_3> rest;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const int role = static_cast<int>(roles->GetTuple1(i));
+    if (role != vtkLaplacianDeformationFilter::ROLE_FIXED)
+    {
+      deformation.insert_roi_vertex(vertices[i]);
+    }
+    if (role == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+    {
+      deformation.insert_control_vertex(vertices[i]);
+      handles.push_back(vertices[i]);
+      rest.push_back(surface.point(vertices[i]));
+    }
+  }
+  Clock::time_point start = Clock::now();
+  const bool ready = deformation.preprocess();
+  const double preprocess = SecondsSince(start);
+
+  const double diagonal = mesh->GetLength();
+  auto timeMoves = [&](unsigned int iterations) {
+    std::vector<double> times;
+    for (int move = 1; move <= options.Moves; ++move)
+    {
+      const double s = diagonal * move / options.Moves;
+      const Kernel::Vector_3 t(s * options.Translate[0], s * options.Translate[1], s * options.Translate[2]);
+      const Clock::time_point begin = Clock::now();
+      for (std::size_t h = 0; h < handles.size(); ++h)
+      {
+        deformation.set_target_position(handles[h], rest[h] + t);
+      }
+      deformation.deform(iterations, 0.0);
+      times.push_back(SecondsSince(begin));
+    }
+    return Median(times);
+  };
+  const double deform1 = ready ? timeMoves(1) : 0.0;
+  deformation.reset();
+  const double deform5 = ready ? timeMoves(5) : 0.0;
+
+  std::ostringstream json;
+  json << std::setprecision(6) << "\"cgal\": {\"preprocess_ok\": " << (ready ? "true" : "false")
+       << ", \"skipped_faces\": " << skippedFaces << ", \"preprocess_seconds\": " << preprocess
+       << ", \"deform1_median_seconds\": " << deform1
+       << ", \"deform5_median_seconds\": " << deform5 << "}";
+  return json.str();
+}
+#endif
 }
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  Options options;
+  if (!Parse(argc, argv, options))
   {
     std::cerr << "usage: " << argv[0]
-              << " MESH [--vertex V | --point X Y Z] [--roi F] [--handle F] [--translate DX DY DZ]"
-                 " [--moves N] [--order 1|2] [--weights uniform|cotangent] [--solver cholmod|ldlt]"
-                 " [--ordering auto|amd|metis|nesdis] [--mode none|explicit|implicit] [--iterations K]"
-                 " [--no-rescale]\n";
+              << " MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F] [--handle F]"
+                 " [--translate DX DY DZ] [--moves N] [--order 1|2] [--weights uniform|cotangent]"
+                 " [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]"
+                 " [--mode none|explicit|implicit] [--iterations K] [--rescale] [--compare-cgal]\n";
     return EXIT_FAILURE;
   }
   std::string error;
-  const std::string meshName =
-    std::string(argv[1]) == "--sphere" && argc > 2 ? "sphere-" + std::string(argv[2]) : argv[1];
-  vtkSmartPointer<vtkPolyData> mesh = meshName.rfind("sphere-", 0) == 0
-    ? Sphere(std::atof(argv[2]))
-    : MeshReader::Read(argv[1], error);
+  const std::string meshName = options.SphereVertices > 0.0
+    ? "sphere-" + std::to_string(static_cast<long>(options.SphereVertices))
+    : options.Mesh;
+  vtkSmartPointer<vtkPolyData> mesh =
+    options.SphereVertices > 0.0 ? Sphere(options.SphereVertices) : MeshReader::Read(options.Mesh, error);
   if (!mesh)
   {
     std::cerr << "error: " << error << "\n";
     return EXIT_FAILURE;
   }
-  vtkIdType vertex = 0;
-  double point[3];
-  bool usePoint = false;
-  double roi = 0.25, handle = 0.03, translate[3] = { 0.0, 0.0, 0.05 };
-  int moves = 20;
-  vtkNew<vtkLaplacianDeformationFilter> filter;
-  bool largest = false;
-  for (int i = meshName == argv[1] ? 2 : 3; i < argc; ++i)
+  if (options.LargestComponent)
   {
-    const std::string arg = argv[i];
-    auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
-    if (arg == "--vertex")
+    options.Vertex = FirstVertexOfLargestComponent(mesh);
+  }
+  if (!options.UsePoint)
+  {
+    if (options.Vertex < 0 || options.Vertex >= mesh->GetNumberOfPoints())
     {
-      const std::string value = next();
-      largest = value == "largest";
-      vertex = largest ? 0 : std::atol(value.c_str());
-    }
-    else if (arg == "--point")
-    {
-      usePoint = true;
-      for (double& c : point)
-        c = std::atof(next().c_str());
-    }
-    else if (arg == "--roi")
-      roi = std::atof(next().c_str());
-    else if (arg == "--handle")
-      handle = std::atof(next().c_str());
-    else if (arg == "--translate")
-      for (double& c : translate)
-        c = std::atof(next().c_str());
-    else if (arg == "--moves")
-      moves = std::max(1, std::atoi(next().c_str()));
-    else if (arg == "--order")
-      filter->SetOperatorOrder(std::atoi(next().c_str()));
-    else if (arg == "--weights")
-      filter->SetLaplacianWeights(next() == "cotangent" ? 1 : 0);
-    else if (arg == "--solver")
-      filter->SetSolver(next() == "ldlt" ? 1 : 0);
-    else if (arg == "--mode")
-    {
-      const std::string mode = next();
-      filter->SetRotationMode(mode == "explicit" ? 1 : (mode == "implicit" ? 2 : 0));
-    }
-    else if (arg == "--ordering")
-    {
-      const std::string ordering = next();
-      filter->SetOrdering(ordering == "amd" ? 1 : ordering == "metis" ? 2 : ordering == "nesdis" ? 3 : 0);
-    }
-    else if (arg == "--iterations")
-      filter->SetNumberOfIterations(std::atoi(next().c_str()));
-    else if (arg == "--no-rescale")
-      filter->PreserveDetailScaleOff();
-    else
-    {
-      std::cerr << "unknown argument " << arg << "\n";
+      std::cerr << "error: vertex " << options.Vertex << " out of range\n";
       return EXIT_FAILURE;
     }
+    mesh->GetPoint(options.Vertex, options.Point);
   }
-  if (largest)
+
+  if (options.CompareCGAL)
   {
-    vertex = FirstVertexOfLargestComponent(mesh);
+    // CGAL needs one vertex per position; the filter welds internally, CGAL cannot.
+    vtkNew<vtkCleanPolyData> weld;
+    weld->SetInputData(mesh);
+    weld->PointMergingOn();
+    weld->SetTolerance(0.0);
+    weld->Update();
+    mesh = weld->GetOutput();
   }
-  if (!usePoint)
-  {
-    if (vertex < 0 || vertex >= mesh->GetNumberOfPoints())
-    {
-      std::cerr << "error: vertex " << vertex << " out of range\n";
-      return EXIT_FAILURE;
-    }
-    mesh->GetPoint(vertex, point);
-  }
-  const double diagonal = mesh->GetLength();
-  filter->SetInputData(mesh);
-  filter->SetHandleCenter(point);
-  filter->SetROIRadius(roi * diagonal);
-  filter->SetHandleRadius(handle * diagonal);
-  vtkNew<vtkTransform> transform;
-  filter->SetHandleTransform(transform);
-  filter->Update();
-  const int factorizations = filter->GetNumberOfFactorizations();
-  if (factorizations == 0)
+  const char* modes[] = { "none", "explicit", "implicit" };
+  const char* orderings[] = { "auto", "amd", "metis", "nesdis" };
+  const Measurement main = Measure(mesh, options.Point, options, options.Mode, options.Iterations);
+  if (!main.Output)
   {
     std::cerr << "error: setup failed\n";
     return EXIT_FAILURE;
   }
-  const double setup = filter->GetSetupTime();
-  const double analysis = filter->GetAnalysisTime();
-  const double factorization = filter->GetFactorizationTime();
-
-  std::vector<double> solveTimes, updateTimes;
-  for (int move = 1; move <= moves; ++move)
+  std::ostringstream json;
+  json << std::setprecision(6) << "{\"mesh\": \"" << meshName
+       << "\", \"vertices\": " << mesh->GetNumberOfPoints()
+       << ", \"roi_vertices\": " << main.ROIVertices
+       << ", \"handle_vertices\": " << main.HandleVertices << ", \"order\": " << options.Order
+       << ", \"weights\": \"" << (options.Weights ? "cotangent" : "uniform") << "\", \"solver\": \""
+       << (options.Solver ? "ldlt" : "cholmod") << "\", \"ordering\": \""
+       << orderings[options.Ordering] << "\", \"mode\": \"" << modes[options.Mode]
+       << "\", \"iterations\": " << options.Iterations << ", " << main.Json()
+       << ", \"moves\": " << options.Moves;
+  bool refactored = main.Refactored;
+  if (options.CompareCGAL)
   {
-    const double s = static_cast<double>(move) / moves;
-    transform->Identity();
-    transform->Translate(
-      s * translate[0] * diagonal, s * translate[1] * diagonal, s * translate[2] * diagonal);
-    const auto start = std::chrono::steady_clock::now();
-    filter->Update();
-    updateTimes.push_back(
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    solveTimes.push_back(filter->GetSolveTime());
+    // Every mode on the same selection, then CGAL.
+    const std::pair<const char*, std::pair<int, int>> runs[] = { { "none", { 0, 1 } },
+      { "explicit1", { 1, 1 } }, { "explicit3", { 1, 3 } }, { "implicit", { 2, 1 } } };
+    for (const auto& [name, run] : runs)
+    {
+      const Measurement m = Measure(mesh, options.Point, options, run.first, run.second);
+      refactored = refactored || m.Refactored;
+      json << ", \"" << name << "\": {" << m.Json() << "}";
+    }
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+    json << ", " << MeasureCGAL(mesh, main.Output->GetPointData()->GetArray("EditRole"), options);
+#else
+    json << ", \"cgal\": \"not built (CGAL not found)\"";
+#endif
   }
-  const char* weights = filter->GetLaplacianWeights() == 1 ? "cotangent" : "uniform";
-  const char* solver = filter->GetSolver() == 0 ? "cholmod" : "ldlt";
-  const char* modes[] = { "none", "explicit", "implicit" };
-  const char* orderings[] = { "auto", "amd", "metis", "nesdis" };
-  std::cout << std::setprecision(6) << "{\"mesh\": \"" << meshName << "\", \"vertices\": "
-            << mesh->GetNumberOfPoints() << ", \"roi_vertices\": " << filter->GetNumberOfROIVertices()
-            << ", \"handle_vertices\": " << filter->GetNumberOfHandleVertices()
-            << ", \"order\": " << filter->GetOperatorOrder() << ", \"weights\": \"" << weights
-            << "\", \"solver\": \"" << solver << "\", \"ordering\": \""
-            << orderings[filter->GetOrdering()] << "\", \"mode\": \""
-            << modes[filter->GetRotationMode()] << "\", \"iterations\": "
-            << filter->GetNumberOfIterations() << ", \"setup_seconds\": " << setup
-            << ", \"analysis_seconds\": " << analysis
-            << ", \"factorization_seconds\": " << factorization
-            << ", \"move_median_seconds\": " << Median(solveTimes)
-            << ", \"update_median_seconds\": " << Median(updateTimes) << ", \"moves\": " << moves
-            << ", \"factorizations\": " << filter->GetNumberOfFactorizations()
-            << ", \"peak_memory_mb\": " << PeakMemoryMegabytes() << ", \"blas\": \"" << LoadedBlas()
-            << "\"}\n";
+  json << ", \"peak_memory_mb\": " << PeakMemoryMegabytes() << ", \"blas\": \"" << LoadedBlas()
+       << "\"}";
+  std::cout << json.str() << "\n";
   // Moving the handle must never refactor.
-  return filter->GetNumberOfFactorizations() == factorizations ? EXIT_SUCCESS : EXIT_FAILURE;
+  return refactored ? EXIT_FAILURE : EXIT_SUCCESS;
 }

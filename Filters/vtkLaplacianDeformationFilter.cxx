@@ -93,7 +93,8 @@ struct vtkLaplacianDeformationFilter::vtkInternals
 {
   std::vector<vtkSmartPointer<vtkLinearTransform>> HandleTransforms;
 
-  // What the cached factorization was built from.
+  // What the cached surface graph, and the cached factorization, were built from.
+  std::vector<double> MeshKey;
   std::vector<double> CacheKey;
   std::string CacheArrayName;
 
@@ -116,6 +117,7 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   std::vector<int> CellVertices;
 
   void FindNormalsToRefresh(vtkPolyData* input);
+  std::string BuildMesh(vtkPolyData* input, bool mergeCoincidentPoints);
   // The core works on coordinates centred on the input's bounding box and scaled to a unit
   // diagonal, so that offset or tiny models keep their precision.
   le::Vector3 Center = le::Vector3::Zero();
@@ -133,6 +135,46 @@ struct vtkLaplacianDeformationFilter::vtkInternals
     this->Region = le::EditRegion();
   }
 };
+
+std::string vtkLaplacianDeformationFilter::vtkInternals::BuildMesh(
+  vtkPolyData* input, bool mergeCoincidentPoints)
+{
+  double bounds[6];
+  input->GetBounds(bounds);
+  this->Center = le::Vector3(
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
+  const double diagonal =
+    le::Vector3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
+  if (!(diagonal > 0.0))
+  {
+    return "All input points coincide: there is no surface to edit.";
+  }
+  this->Scale = 1.0 / diagonal;
+
+  std::vector<le::Vector3> points(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    points[i] = this->Normalize(input->GetPoint(i));
+  }
+  std::vector<std::int64_t> offsets(1, 0);
+  std::vector<std::int64_t> connectivity;
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    connectivity.insert(connectivity.end(), ids, ids + size);
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+  }
+  this->Mesh = std::make_shared<le::SurfaceMesh>(
+    le::SurfaceMesh::FromPolygons(points, offsets, connectivity, mergeCoincidentPoints));
+  if (this->Mesh->GetNumberOfTriangles() == 0)
+  {
+    return "The input polygons are all degenerate: no triangle has three distinct corners.";
+  }
+  return {};
+}
 
 void vtkLaplacianDeformationFilter::vtkInternals::FindNormalsToRefresh(vtkPolyData* input)
 {
@@ -273,6 +315,7 @@ int vtkLaplacianDeformationFilter::RequestData(
   output->ShallowCopy(input);
   this->NumberOfROIVertices = 0;
   this->NumberOfHandleVertices = 0;
+  this->TopologyTime = 0.0;
   this->SetupTime = 0.0;
   this->AnalysisTime = 0.0;
   this->FactorizationTime = 0.0;
@@ -331,6 +374,23 @@ int vtkLaplacianDeformationFilter::RequestData(
     return fail("HandleRadius and ROIRadius must be positive.");
   }
 
+  // The surface graph depends on the input alone: a new region reuses it.
+  const std::vector<double> meshKey = { static_cast<double>(input->GetMTime()),
+    static_cast<double>(this->MergeCoincidentPoints) };
+  if (meshKey != internals.MeshKey)
+  {
+    const Clock::time_point start = Clock::now();
+    internals.Invalidate();
+    internals.MeshKey.clear();
+    const std::string error = internals.BuildMesh(input, this->MergeCoincidentPoints != 0);
+    if (!error.empty())
+    {
+      return fail(error);
+    }
+    internals.MeshKey = meshKey;
+    this->TopologyTime = SecondsSince(start);
+  }
+
   const std::vector<double> key = { static_cast<double>(input->GetMTime()),
     static_cast<double>(this->SelectionMode), this->HandleCenter[0], this->HandleCenter[1],
     this->HandleCenter[2], this->HandleRadius, this->ROIRadius, this->AnchorPadding,
@@ -345,41 +405,6 @@ int vtkLaplacianDeformationFilter::RequestData(
     internals.Invalidate();
     this->UpdateProgress(0.0);
 
-    double bounds[6];
-    input->GetBounds(bounds);
-    internals.Center = le::Vector3(
-      0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
-    const double diagonal = le::Vector3(
-      bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
-    if (!(diagonal > 0.0))
-    {
-      return fail("All input points coincide: there is no surface to edit.");
-    }
-    internals.Scale = 1.0 / diagonal;
-
-    std::vector<le::Vector3> points(numberOfPoints);
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      points[i] = internals.Normalize(inputPoints->GetPoint(i));
-    }
-    std::vector<std::int64_t> offsets(1, 0);
-    std::vector<std::int64_t> connectivity;
-    auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      cells->GetCurrentCell(size, ids);
-      connectivity.insert(connectivity.end(), ids, ids + size);
-      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    }
-    internals.Mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
-      points, offsets, connectivity, this->MergeCoincidentPoints != 0));
-    if (internals.Mesh->GetNumberOfTriangles() == 0)
-    {
-      return fail("The input polygons are all degenerate: no triangle has three distinct "
-                  "corners.");
-    }
     this->UpdateProgress(0.1);
 
     std::string error;

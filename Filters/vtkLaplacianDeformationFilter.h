@@ -266,13 +266,16 @@ public:
 
   ///@{
   /**
-   * Facts of the last update: ROI and handle sizes; seconds spent on the whole setup (region
-   * selection, assembly, analysis and factorization; 0 when the cached factor was reused), on
-   * the sparse ordering analysis and on the numeric factorization alone; and seconds spent
-   * solving and writing the output for the current handle transforms.
+   * Facts of the last update: ROI and handle sizes; seconds spent building the surface graph
+   * (merging coincident points, adjacency; only when the input changed); seconds spent on the
+   * region's setup (selection, assembly, analysis, factorization and the precomputed handle
+   * responses; 0 when the cached factor was reused), on the sparse ordering analysis and on the
+   * numeric factorization alone; and seconds spent solving and writing the output for the
+   * current handle transforms.
    */
   vtkGetMacro(NumberOfROIVertices, int);
   vtkGetMacro(NumberOfHandleVertices, int);
+  vtkGetMacro(TopologyTime, double);
   vtkGetMacro(SetupTime, double);
   vtkGetMacro(AnalysisTime, double);
   vtkGetMacro(FactorizationTime, double);
@@ -308,6 +311,7 @@ protected:
   int NumberOfFactorizations = 0;
   int NumberOfROIVertices = 0;
   int NumberOfHandleVertices = 0;
+  double TopologyTime = 0.0;
   double SetupTime = 0.0;
   double AnalysisTime = 0.0;
   double FactorizationTime = 0.0;
