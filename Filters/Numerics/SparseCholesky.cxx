@@ -60,11 +60,6 @@ void SetOrdering(Solver&, FillOrdering)
 void SetOrdering(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver, FillOrdering ordering)
 {
   cholmod_common& common = solver.cholmod();
-  if (ordering == FillOrdering::Automatic)
-  {
-    common.nmethods = 0;
-    return;
-  }
   common.nmethods = 1;
   common.method[0].ordering = ordering == FillOrdering::AMD ? CHOLMOD_AMD
     : ordering == FillOrdering::METIS                       ? CHOLMOD_METIS
@@ -98,6 +93,13 @@ std::unique_ptr<SparseCholesky::Backend> FactorWith(const SparseMatrix& matrix,
 std::string SparseCholesky::Factorize(
   const SparseMatrix& matrix, SolverBackend backend, FillOrdering ordering)
 {
+  // AMD orders fast; on large systems METIS's slower analysis pays back in factorization time
+  // and memory. CHOLMOD's own default tries METIS far earlier, which costs more than it saves
+  // on editing regions (bunny, 28.9k, second order: 0.69 s against 0.38 s with AMD).
+  if (ordering == FillOrdering::Automatic)
+  {
+    ordering = matrix.rows() < 300000 ? FillOrdering::AMD : FillOrdering::METIS;
+  }
   this->Impl.reset();
   std::string error;
   if (!IsAvailable(backend))
