@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -242,6 +243,11 @@ vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
   {
     this->Solver = SOLVER_SIMPLICIAL_LDLT;
   }
+  // The core's per-move loops run on VTK's SMP backend.
+  this->Internals->Editor.SetParallelFor(
+    [](int begin, int end, const std::function<void(int, int)>& body) {
+      vtkSMPTools::For(begin, end, [&](int first, int last) { body(first, last); });
+    });
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }

@@ -83,8 +83,8 @@ std::string LaplacianEditor::Solve(
   {
     for (int pass = 0; pass < std::max(rotation.Iterations, 1); ++pass)
     {
-      const Positions rotated =
-        this->Frames->Rotate(roiPositions, this->Normals->Compute(roiPositions));
+      const Positions rotated = this->Frames->Rotate(
+        roiPositions, this->Normals->Compute(roiPositions, this->Loop), this->Loop);
       roiPositions = this->System.SolveWithDifferentialCoordinates(rotated, handleMaps);
     }
   }

@@ -64,6 +64,9 @@ public:
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
   const DeformationSystem& GetSystem() const { return this->System; }
 
+  /// How per-move loops over the ROI run (serial by default).
+  void SetParallelFor(ParallelFor loop) { this->Loop = std::move(loop); }
+
 private:
   void Record(const SparseCholesky& factor);
 
@@ -76,6 +79,7 @@ private:
   std::unique_ptr<LocalFrames> Frames;
   // Implicit mode.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
+  ParallelFor Loop = SerialFor;
   int NumberOfFactorizations = 0;
   double AnalysisSeconds = 0.0;
   double FactorizationSeconds = 0.0;

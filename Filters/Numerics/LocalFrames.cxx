@@ -56,10 +56,12 @@ void LocalFrames::Build(const SurfaceMesh& mesh, const std::vector<int>& vertice
   }
 }
 
-Positions LocalFrames::Rotate(const Positions& roiPositions, const Positions& normals) const
+Positions LocalFrames::Rotate(
+  const Positions& roiPositions, const Positions& normals, const ParallelFor& loop) const
 {
   Positions rotated(roiPositions.rows(), 3);
-  for (Eigen::Index row = 0; row < roiPositions.rows(); ++row)
+  loop(0, static_cast<int>(roiPositions.rows()), [&](int first, int last) {
+  for (int row = first; row < last; ++row)
   {
     const Eigen::Vector3d normal = normals.row(row).transpose();
     const int end = this->EdgeRoiRow[row];
@@ -74,6 +76,7 @@ Positions LocalFrames::Rotate(const Positions& roiPositions, const Positions& no
     const Eigen::Vector3d c = this->Coefficients.row(row).transpose();
     rotated.row(row) = (c[0] * normal + c[1] * u + c[2] * normal.cross(u)).transpose();
   }
+  });
   return rotated;
 }
 }

@@ -5,6 +5,7 @@
 #ifndef LaplacianEditing_LocalFrames_h
 #define LaplacianEditing_LocalFrames_h
 
+#include "ParallelFor.h"
 #include "SurfaceMesh.h"
 
 #include <Eigen/Core>
@@ -23,7 +24,8 @@ public:
     const Positions& restNormals, const Positions& restDelta);
 
   /// The differential coordinates carried into the frames of a deformed ROI.
-  Positions Rotate(const Positions& roiPositions, const Positions& normals) const;
+  Positions Rotate(const Positions& roiPositions, const Positions& normals,
+    const ParallelFor& loop = SerialFor) const;
 
 private:
   // The chosen edge's other end: its ROI row, or -1 and its (fixed) rest position.

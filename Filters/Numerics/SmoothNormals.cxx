@@ -83,6 +83,26 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
       }
     }
   }
+  this->SupportTriangleOffsets.assign(this->NumberOfSupportVertices + 1, 0);
+  this->SupportTriangles.clear();
+  {
+    std::vector<std::vector<int>> around(this->NumberOfSupportVertices);
+    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+    {
+      for (int corner : this->Triangles[t])
+      {
+        if (corner < this->NumberOfSupportVertices)
+        {
+          around[corner].push_back(static_cast<int>(t));
+        }
+      }
+    }
+    for (int s = 0; s < this->NumberOfSupportVertices; ++s)
+    {
+      this->SupportTriangles.insert(this->SupportTriangles.end(), around[s].begin(), around[s].end());
+      this->SupportTriangleOffsets[s + 1] = static_cast<int>(this->SupportTriangles.size());
+    }
+  }
   this->ExtendedRoiRow.resize(extendedVertices.size());
   this->ExtendedRest.resize(static_cast<Eigen::Index>(extendedVertices.size()), 3);
   for (std::size_t e = 0; e < extendedVertices.size(); ++e)
@@ -92,7 +112,7 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
   }
 }
 
-Positions SmoothNormals::Compute(const Positions& roiPositions) const
+Positions SmoothNormals::Compute(const Positions& roiPositions, const ParallelFor& loop) const
 {
   Positions current = this->ExtendedRest;
   for (Eigen::Index e = 0; e < current.rows(); ++e)
@@ -102,24 +122,45 @@ Positions SmoothNormals::Compute(const Positions& roiPositions) const
       current.row(e) = roiPositions.row(this->ExtendedRoiRow[e]);
     }
   }
-  // Area-weighted vertex normals (twice the area, which the normalization cancels).
-  Positions areaNormals = Positions::Zero(this->NumberOfSupportVertices, 3);
-  for (const auto& tri : this->Triangles)
-  {
-    const Eigen::RowVector3d n =
-      (current.row(tri[1]) - current.row(tri[0])).cross(current.row(tri[2]) - current.row(tri[0]));
-    for (int corner : tri)
+  // Triangle normals (twice the area, which the normalizations cancel), then their sums at the
+  // support vertices, then the two weighted averages: every loop is over independent rows.
+  Positions triangleNormals(static_cast<Eigen::Index>(this->Triangles.size()), 3);
+  loop(0, static_cast<int>(this->Triangles.size()), [&](int first, int last) {
+    for (int t = first; t < last; ++t)
     {
-      if (corner < this->NumberOfSupportVertices)
-      {
-        areaNormals.row(corner) += n;
-      }
+      const auto& tri = this->Triangles[t];
+      triangleNormals.row(t) =
+        (current.row(tri[1]) - current.row(tri[0])).cross(current.row(tri[2]) - current.row(tri[0]));
     }
-  }
-  Positions sampleNormals = this->SampleWeights * areaNormals;
-  sampleNormals.rowwise().normalize();
-  Positions normals = this->BlendWeights * sampleNormals;
-  normals.rowwise().normalize();
-  return normals;
+  });
+  Positions areaNormals(this->NumberOfSupportVertices, 3);
+  loop(0, this->NumberOfSupportVertices, [&](int first, int last) {
+    for (int s = first; s < last; ++s)
+    {
+      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+      for (int k = this->SupportTriangleOffsets[s]; k < this->SupportTriangleOffsets[s + 1]; ++k)
+      {
+        sum += triangleNormals.row(this->SupportTriangles[k]);
+      }
+      areaNormals.row(s) = sum;
+    }
+  });
+  auto average = [&](const Eigen::SparseMatrix<double, Eigen::RowMajor>& weights,
+                   const Positions& values) {
+    Positions result(weights.rows(), 3);
+    loop(0, static_cast<int>(weights.rows()), [&](int first, int last) {
+      for (int row = first; row < last; ++row)
+      {
+        Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(weights, row); it; ++it)
+        {
+          sum += it.value() * values.row(it.col());
+        }
+        result.row(row) = sum.normalized();
+      }
+    });
+    return result;
+  };
+  return average(this->BlendWeights, average(this->SampleWeights, areaNormals));
 }
 }

@@ -14,6 +14,7 @@
 #ifndef LaplacianEditing_SmoothNormals_h
 #define LaplacianEditing_SmoothNormals_h
 
+#include "ParallelFor.h"
 #include "SurfaceMesh.h"
 
 #include <Eigen/SparseCore>
@@ -33,7 +34,7 @@ public:
 
   /// Unit smooth normals at the ROI vertices, for ROI positions `roiPositions` (rows follow
   /// `vertices`); vertices outside the ROI keep their rest positions.
-  Positions Compute(const Positions& roiPositions) const;
+  Positions Compute(const Positions& roiPositions, const ParallelFor& loop = SerialFor) const;
 
   double GetRadius() const { return this->Radius; }
   int GetNumberOfSamples() const { return static_cast<int>(this->SampleWeights.rows()); }
@@ -48,8 +49,11 @@ private:
   // of each (-1 outside the ROI).
   std::vector<int> ExtendedRoiRow;
   Positions ExtendedRest;
-  // Triangles touching the support, as indices into the extended set.
+  // Triangles touching the support, as indices into the extended set, and the triangles around
+  // each support vertex (compressed rows into Triangles).
   std::vector<std::array<int, 3>> Triangles;
+  std::vector<int> SupportTriangleOffsets;
+  std::vector<int> SupportTriangles;
   int NumberOfSupportVertices = 0;
 };
 }
