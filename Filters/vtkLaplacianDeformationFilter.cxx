@@ -21,6 +21,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
+#include <vtksys/SystemInformation.hxx>
 
 #include <algorithm>
 #include <chrono>
@@ -402,7 +403,8 @@ int vtkLaplacianDeformationFilter::RequestData(
     this->HandleCenter[2], this->HandleRadius, this->ROIRadius, this->AnchorPadding,
     this->HandleWeight, this->AnchorWeight, static_cast<double>(this->LaplacianWeights),
     static_cast<double>(this->OperatorOrder), static_cast<double>(this->Solver),
-    static_cast<double>(this->MergeCoincidentPoints), static_cast<double>(this->Ordering) };
+    static_cast<double>(this->MergeCoincidentPoints), static_cast<double>(this->Ordering),
+    this->MaximumFactorMemory };
   const std::string arrayName = selection && selection->GetName() ? selection->GetName() : "";
 
   if (key != internals.CacheKey || arrayName != internals.CacheArrayName)
@@ -453,6 +455,10 @@ int vtkLaplacianDeformationFilter::RequestData(
     options.Backend = this->Solver == SOLVER_CHOLMOD ? le::SolverBackend::Cholmod
                                                      : le::SolverBackend::SimplicialLDLT;
     options.Ordering = static_cast<le::FillOrdering>(this->Ordering);
+    options.MaximumFactorBytes = 1048576.0 *
+      (this->MaximumFactorMemory > 0.0
+          ? this->MaximumFactorMemory
+          : 0.8 * static_cast<double>(vtksys::SystemInformation().GetAvailablePhysicalMemory()));
     error = internals.Editor.Build(internals.Mesh, internals.Region, options);
     this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
     if (!error.empty())
@@ -509,6 +515,7 @@ int vtkLaplacianDeformationFilter::RequestData(
     {
       this->SetupTime += SecondsSince(start);
     }
+    this->FactorMemory = internals.Editor.GetFactorBytes() / 1048576.0;
     if (this->SetupTime > 0.0)
     {
       this->AnalysisTime = internals.Editor.GetAnalysisSeconds();
@@ -516,6 +523,10 @@ int vtkLaplacianDeformationFilter::RequestData(
     }
   }
   this->UpdateProgress(0.9);
+  if (this->GetAbortExecute())
+  {
+    return 1; // the output is still the input; the factor stays cached
+  }
 
   // Handle transforms, expressed in the normalized frame: x' = M x + t becomes
   // x'_n = M x_n + s (M c + t - c).
@@ -641,6 +652,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreserveDetailScale: " << this->PreserveDetailScale << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "Ordering: " << this->Ordering << "\n";
+  os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << "\n";
   os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
   os << indent << "GenerateEditRoles: " << this->GenerateEditRoles << "\n";
   os << indent << "NumberOfHandleTransforms: " << this->Internals->HandleTransforms.size() << "\n";

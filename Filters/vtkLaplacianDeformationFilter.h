@@ -224,6 +224,17 @@ public:
 
   ///@{
   /**
+   * Largest factor to attempt, in megabytes. CHOLMOD's analysis predicts the factor's size
+   * before it is computed; a larger one is refused with an error, so that a huge region fails
+   * clearly instead of exhausting memory. 0 (the default) means 80% of the physical memory
+   * available when the factorization starts. (SimplicialLDLT cannot predict its size.)
+   */
+  vtkSetClampMacro(MaximumFactorMemory, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumFactorMemory, double);
+  ///@}
+
+  ///@{
+  /**
    * Treat input points at the same position as one surface vertex. Default on.
    */
   vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
@@ -282,6 +293,12 @@ public:
   vtkGetMacro(SolveTime, double);
   ///@}
 
+  /**
+   * Megabytes of the factors held for the current region (CHOLMOD's prediction; 0 if
+   * unknown).
+   */
+  vtkGetMacro(FactorMemory, double);
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -305,6 +322,7 @@ protected:
   vtkTypeBool PreserveDetailScale = 0;
   int Solver = SOLVER_CHOLMOD;
   int Ordering = ORDERING_AUTOMATIC;
+  double MaximumFactorMemory = 0.0;
   vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;
 
@@ -316,6 +334,7 @@ protected:
   double AnalysisTime = 0.0;
   double FactorizationTime = 0.0;
   double SolveTime = 0.0;
+  double FactorMemory = 0.0;
 
 private:
   vtkLaplacianDeformationFilter(const vtkLaplacianDeformationFilter&) = delete;

@@ -62,7 +62,8 @@ std::string DeformationSystem::Build(
   }
   normalMatrix.makeCompressed();
   this->RestRightHandSide = this->RegionOperator.transpose() * (this->RestDelta - this->FixedPart);
-  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering);
+  const std::string error = this->Factor.Factorize(
+    normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
   if (!error.empty())
   {
     return error;

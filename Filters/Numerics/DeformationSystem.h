@@ -39,6 +39,8 @@ struct DeformationOptions
   double AnchorWeight = 1.0;
   SolverBackend Backend = SolverBackend::Cholmod;
   FillOrdering Ordering = FillOrdering::Automatic;
+  /// Largest factor to attempt, in bytes (0: no limit; CHOLMOD only).
+  double MaximumFactorBytes = 0.0;
 };
 
 class DeformationSystem

@@ -104,17 +104,33 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
            "than ROIRadius";
   }
   const std::vector<double> distance = ComputeGeodesicDistances(mesh, { centerVertex }, roiRadius);
+  // When the ROI swallows the whole component, the anchor band is measured from the distance
+  // it actually reaches, so that the far end is still held.
+  double reach = 0.0;
+  bool touchesFixed = false;
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    if (std::isfinite(distance[v]))
+    {
+      reach = std::max(reach, distance[v]);
+      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+      {
+        touchesFixed = touchesFixed || !std::isfinite(distance[*w]);
+      }
+    }
+  }
+  const double radius = touchesFixed || reach <= 0.0 ? roiRadius : reach;
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
     if (std::isfinite(distance[v]))
     {
       region.Vertices.push_back(v);
       region.HandleGroups.push_back(distance[v] <= handleRadius ? 0 : -1);
-      region.RelativeDistances.push_back(distance[v] / roiRadius);
+      region.RelativeDistances.push_back(distance[v] / radius);
     }
   }
   region.NumberOfHandleGroups = 1;
-  region.Radius = roiRadius;
+  region.Radius = radius;
   return Finish(mesh, anchorPadding, region);
 }
 

@@ -41,7 +41,9 @@ struct EditRegion
 
 /// Handle: vertices within `handleRadius` (edge-path distance) of `centerVertex`.
 /// ROI: vertices within `roiRadius` of it. Anchors: ROI vertices farther than
-/// (1 - anchorPadding) * roiRadius. Returns an error message, empty on success.
+/// (1 - anchorPadding) * roiRadius, or, when the ROI covers the whole component, farther than
+/// (1 - anchorPadding) times the largest distance reached. Returns an error message, empty on
+/// success.
 std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, double handleRadius,
   double roiRadius, double anchorPadding, EditRegion& region);
 

@@ -42,7 +42,7 @@ Eigen::Matrix<double, 3, 4> ApplyToDelta(const Eigen::Vector3d& delta)
 }
 
 std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
-  const DeformationSystem& plain, SolverBackend backend, FillOrdering ordering)
+  const DeformationSystem& plain, const DeformationOptions& options)
 {
   const int n = region.GetNumberOfVertices();
   this->NumberOfVertices = n;
@@ -135,7 +135,8 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
   normalMatrix.makeCompressed();
   this->KnownRightHandSide = transposed * known;
-  const std::string error = this->Factor.Factorize(normalMatrix, backend, ordering);
+  const std::string error = this->Factor.Factorize(
+    normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
   if (!error.empty())
   {
     return error;

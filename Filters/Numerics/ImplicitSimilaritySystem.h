@@ -18,8 +18,7 @@ public:
   /// Assembles and factors the coupled system for the region `plain` was built on (it supplies
   /// the differential operator, the fixed part and the constraint weights).
   std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
-    const DeformationSystem& plain, SolverBackend backend,
-    FillOrdering ordering = FillOrdering::Automatic);
+    const DeformationSystem& plain, const DeformationOptions& options);
 
   /// The ROI positions minimizing the energy for the given handle maps (precomputed responses).
   Positions Solve(const std::vector<AffineMap>& handleMaps) const;

@@ -4,6 +4,12 @@
 
 namespace LaplacianEditing
 {
+double LaplacianEditor::GetFactorBytes() const
+{
+  return this->System.GetFactor().GetFactorBytes() +
+    (this->Implicit ? this->Implicit->GetFactor().GetFactorBytes() : 0.0);
+}
+
 void LaplacianEditor::Record(const SparseCholesky& factor)
 {
   ++this->NumberOfFactorizations;
@@ -46,8 +52,7 @@ std::string LaplacianEditor::Prepare(const RotationOptions& rotation, bool& buil
   {
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
     const std::string error =
-      implicit->Build(
-      *this->Mesh, this->Region, this->System, this->Options.Backend, this->Options.Ordering);
+      implicit->Build(*this->Mesh, this->Region, this->System, this->Options);
     if (!error.empty())
     {
       return error;

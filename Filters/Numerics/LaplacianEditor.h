@@ -63,6 +63,8 @@ public:
   double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
   const DeformationSystem& GetSystem() const { return this->System; }
+  /// Bytes of the factors held (as predicted by CHOLMOD's analysis; 0 if unknown).
+  double GetFactorBytes() const;
 
   /// How per-move loops over the ROI run (serial by default).
   void SetParallelFor(ParallelFor loop) { this->Loop = std::move(loop); }

@@ -40,8 +40,10 @@ void LocalFrames::Build(const SurfaceMesh& mesh, const std::vector<int>& vertice
     for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
     {
       const Eigen::Vector3d edge = positions[*w] - positions[v];
+      // Near-ties (flat rings, where every edge is orthogonal to n) go to the first neighbour,
+      // so that the last bits of the coordinates do not pick the frame.
       const double cosine = std::abs(edge.dot(normal)) / edge.norm();
-      if (cosine < bestCosine)
+      if (cosine < bestCosine - 1e-6)
       {
         bestCosine = cosine;
         best = *w;

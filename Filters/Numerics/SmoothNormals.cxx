@@ -57,7 +57,9 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
       if (roiRow[v] >= 0 && d < blendRadius)
       {
         blendTriplets.emplace_back(roiRow[v], sample, FallOff(d, blendRadius));
-        covered[roiRow[v]] = covered[roiRow[v]] || d <= spacing;
+        // A tolerance keeps vertices at exactly the spacing (regular grids) covered whatever
+        // the last bits of their coordinates.
+        covered[roiRow[v]] = covered[roiRow[v]] || d <= spacing * (1.0 + 1e-6);
       }
     });
   }

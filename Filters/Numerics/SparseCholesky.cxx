@@ -56,6 +56,13 @@ void SetOrdering(Solver&, FillOrdering)
 {
 }
 
+// Bytes of the factor the analysis predicts: unknown for Eigen's own solvers.
+template <typename Solver>
+double PredictedFactorBytes(Solver&)
+{
+  return 0.0;
+}
+
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
 void SetOrdering(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver, FillOrdering ordering)
 {
@@ -66,23 +73,45 @@ void SetOrdering(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver
                                                             : CHOLMOD_NESDIS;
   common.postorder = 1;
 }
+
+double PredictedFactorBytes(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver)
+{
+  // Values plus row indices of every stored nonzero.
+  return solver.cholmod().lnz * (sizeof(double) + sizeof(int));
+}
 #endif
 
+struct FactorReport
+{
+  std::string Error;
+  double AnalysisSeconds = 0.0;
+  double FactorizationSeconds = 0.0;
+  double FactorBytes = 0.0;
+};
+
 template <typename Solver>
-std::unique_ptr<SparseCholesky::Backend> FactorWith(const SparseMatrix& matrix,
-  FillOrdering ordering, std::string& error, double& analysisSeconds, double& factorSeconds)
+std::unique_ptr<SparseCholesky::Backend> FactorWith(
+  const SparseMatrix& matrix, FillOrdering ordering, double maximumBytes, FactorReport& report)
 {
   auto backend = std::make_unique<EigenBackend<Solver>>();
   SetOrdering(backend->Factor, ordering);
   Clock::time_point start = Clock::now();
   backend->Factor.analyzePattern(matrix);
-  analysisSeconds = SecondsSince(start);
+  report.AnalysisSeconds = SecondsSince(start);
+  report.FactorBytes = PredictedFactorBytes(backend->Factor);
+  if (maximumBytes > 0.0 && report.FactorBytes > maximumBytes)
+  {
+    report.Error = "the factor would need " + std::to_string(report.FactorBytes / 1048576.0) +
+      " MB, more than the " + std::to_string(maximumBytes / 1048576.0) +
+      " MB allowed; choose a smaller region of interest or raise the limit";
+    return nullptr;
+  }
   start = Clock::now();
   backend->Factor.factorize(matrix);
-  factorSeconds = SecondsSince(start);
+  report.FactorizationSeconds = SecondsSince(start);
   if (backend->Factor.info() != Eigen::Success)
   {
-    error = "the normal equations are not positive definite: some part of the region is not "
+    report.Error = "the normal equations are not positive definite: some part of the region is not "
             "held by any constraint";
     return nullptr;
   }
@@ -91,7 +120,7 @@ std::unique_ptr<SparseCholesky::Backend> FactorWith(const SparseMatrix& matrix,
 }
 
 std::string SparseCholesky::Factorize(
-  const SparseMatrix& matrix, SolverBackend backend, FillOrdering ordering)
+  const SparseMatrix& matrix, SolverBackend backend, FillOrdering ordering, double maximumBytes)
 {
   // AMD orders fast; on large systems METIS's slower analysis pays back in factorization time
   // and memory. CHOLMOD's own default tries METIS far earlier, which costs more than it saves
@@ -101,22 +130,27 @@ std::string SparseCholesky::Factorize(
     ordering = matrix.rows() < 300000 ? FillOrdering::AMD : FillOrdering::METIS;
   }
   this->Impl.reset();
-  std::string error;
   if (!IsAvailable(backend))
   {
     return "this build has no CHOLMOD; use the SimplicialLDLT solver";
   }
+  FactorReport report;
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
   if (backend == SolverBackend::Cholmod)
   {
     this->Impl = FactorWith<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>(
-      matrix, ordering, error, this->AnalysisSeconds, this->FactorizationSeconds);
-    return error;
+      matrix, ordering, maximumBytes, report);
   }
+  else
 #endif
-  this->Impl = FactorWith<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>(
-      matrix, ordering, error, this->AnalysisSeconds, this->FactorizationSeconds);
-  return error;
+  {
+    this->Impl = FactorWith<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>(
+      matrix, ordering, maximumBytes, report);
+  }
+  this->AnalysisSeconds = report.AnalysisSeconds;
+  this->FactorizationSeconds = report.FactorizationSeconds;
+  this->FactorBytes = report.FactorBytes;
+  return report.Error;
 }
 
 Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs) const

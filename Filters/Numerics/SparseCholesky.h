@@ -42,8 +42,10 @@ public:
 
   /// Factors a symmetric positive definite matrix (its lower triangle is read).
   /// Returns an error message, empty on success.
+  /// With CHOLMOD, the symbolic analysis predicts the factor's size first; a factor larger
+  /// than `maximumBytes` (0: no limit) is refused with an error instead of being attempted.
   std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend,
-    FillOrdering ordering = FillOrdering::Automatic);
+    FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0);
 
   /// Solves for every column of `rhs` with the current factor.
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const;
@@ -53,6 +55,8 @@ public:
   /// Seconds spent in the symbolic analysis (ordering) and the numeric factorization.
   double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
+  /// Predicted (CHOLMOD) or actual bytes of the factor; 0 if unknown.
+  double GetFactorBytes() const { return this->FactorBytes; }
 
   /// The factor of one backend (defined in the .cxx).
   struct Backend;
@@ -61,6 +65,7 @@ private:
   std::unique_ptr<Backend> Impl;
   double AnalysisSeconds = 0.0;
   double FactorizationSeconds = 0.0;
+  double FactorBytes = 0.0;
 };
 }
 

@@ -1,6 +1,7 @@
 #include "SurfaceMesh.h"
 
 #include <algorithm>
+#include <tuple>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -71,6 +72,7 @@ SurfaceMesh SurfaceMesh::FromPolygons(const std::vector<Vector3>& points,
       }
     }
   }
+  mesh.OrientTriangles();
   mesh.BuildAdjacency();
   mesh.LabelComponents();
   return mesh;
@@ -95,6 +97,85 @@ void SurfaceMesh::BuildAdjacency()
   const int n = this->GetNumberOfVertices();
   BuildCompressedRows(n, edges, this->NeighborOffsets, this->Neighbors);
   BuildCompressedRows(n, incidences, this->TriangleOffsets, this->VertexTriangles);
+}
+
+void SurfaceMesh::OrientTriangles()
+{
+  // Directed edges (from, to, triangle), sorted so that the triangles of one undirected edge
+  // are adjacent.
+  struct Edge
+  {
+    int Low, High, Triangle;
+    bool Forward; // the triangle runs the edge from Low to High
+    bool operator<(const Edge& other) const
+    {
+      return std::tie(Low, High, Triangle) < std::tie(other.Low, other.High, other.Triangle);
+    }
+  };
+  const int count = this->GetNumberOfTriangles();
+  std::vector<Edge> edges;
+  edges.reserve(3 * count);
+  for (int t = 0; t < count; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = this->Triangles[t][k];
+      const int b = this->Triangles[t][(k + 1) % 3];
+      edges.push_back({ std::min(a, b), std::max(a, b), t, a < b });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  // Manifold edges only: pairs of triangles across each; flipping makes them run it oppositely.
+  std::vector<std::vector<std::pair<int, bool>>> across(count); // (neighbour, same direction)
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i)
+  {
+    const Edge& e = edges[i];
+    const Edge& f = edges[i + 1];
+    const bool pair = e.Low == f.Low && e.High == f.High &&
+      (i + 2 >= edges.size() || edges[i + 2].Low != e.Low || edges[i + 2].High != e.High) &&
+      (i == 0 || edges[i - 1].Low != e.Low || edges[i - 1].High != e.High);
+    if (pair)
+    {
+      across[e.Triangle].emplace_back(f.Triangle, e.Forward == f.Forward);
+      across[f.Triangle].emplace_back(e.Triangle, e.Forward == f.Forward);
+    }
+  }
+  std::vector<int> flip(count, -1); // -1 unvisited, 0 keep, 1 flip
+  std::vector<int> patch, stack;
+  for (int seed = 0; seed < count; ++seed)
+  {
+    if (flip[seed] >= 0)
+    {
+      continue;
+    }
+    flip[seed] = 0;
+    patch.assign(1, seed);
+    stack.assign(1, seed);
+    while (!stack.empty())
+    {
+      const int t = stack.back();
+      stack.pop_back();
+      for (const auto& [neighbor, sameDirection] : across[t])
+      {
+        if (flip[neighbor] < 0)
+        {
+          flip[neighbor] = flip[t] ^ static_cast<int>(sameDirection);
+          patch.push_back(neighbor);
+          stack.push_back(neighbor);
+        }
+      }
+    }
+    // Keep the orientation most of the patch's input triangles have.
+    const auto flipped = std::count_if(patch.begin(), patch.end(), [&](int t) { return flip[t]; });
+    const bool invert = 2 * flipped > static_cast<std::ptrdiff_t>(patch.size());
+    for (int t : patch)
+    {
+      if (flip[t] != static_cast<int>(invert))
+      {
+        std::swap(this->Triangles[t][1], this->Triangles[t][2]);
+      }
+    }
+  }
 }
 
 void SurfaceMesh::LabelComponents()

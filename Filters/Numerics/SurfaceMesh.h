@@ -22,7 +22,10 @@ class SurfaceMesh
 public:
   /// Builds the mesh from polygons given as VTK-style offsets/connectivity into `points`.
   /// Polygons with more than three corners are split into a triangle fan. Triangles that
-  /// collapse after merging (two corners on one vertex) are dropped.
+  /// collapse after merging (two corners on one vertex) are dropped. Triangles are then
+  /// oriented consistently across manifold edges, each connected patch following the
+  /// orientation of most of its input triangles, so that area-weighted normals do not cancel
+  /// on meshes whose faces are wound inconsistently.
   /// With `mergeCoincidentPoints` false, each input point is its own vertex.
   static SurfaceMesh FromPolygons(const std::vector<Vector3>& points,
     const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& connectivity,
@@ -55,6 +58,7 @@ public:
 private:
   void BuildAdjacency();
   void LabelComponents();
+  void OrientTriangles();
 
   std::vector<Vector3> Positions;
   std::vector<std::array<int, 3>> Triangles;

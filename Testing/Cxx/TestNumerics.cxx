@@ -261,7 +261,7 @@ TEST_P(DeformationSystemTest, PrecomputedResponsesMatchDirectSolves)
   ASSERT_EQ(SelectLabeledRegion(edit.Mesh, labels, 0.1, edit.Region), "");
   ASSERT_EQ(edit.System.Build(edit.Mesh, edit.Region, this->Options()), "");
   ImplicitSimilaritySystem implicit;
-  ASSERT_EQ(implicit.Build(edit.Mesh, edit.Region, edit.System, SolverBackend::Cholmod), "");
+  ASSERT_EQ(implicit.Build(edit.Mesh, edit.Region, edit.System, this->Options()), "");
   AffineMap first, second;
   first << 0.9, -0.3, 0.1, 0.2, 0.35, 0.95, 0.05, -0.1, -0.1, 0.02, 1.1, 0.3;
   second << 1.0, 0.2, 0.0, -0.05, -0.2, 1.0, 0.1, 0.0, 0.0, -0.1, 0.9, 0.15;
@@ -327,8 +327,9 @@ TEST(EditRegion, RejectsBadSelections)
   EXPECT_NE(SelectGeodesicRegion(mesh, -1, 0.1, 0.2, 0.1, region), ""); // no vertex
   // The whole mesh as ROI and no anchors: nothing pins it.
   EXPECT_NE(SelectGeodesicRegion(mesh, 0, 0.1, 10.0, 0.0, region), "");
-  // The same with anchors is well posed.
-  EXPECT_EQ(SelectGeodesicRegion(mesh, 0, 0.1, 1.5, 0.1, region), "");
+  // The same with anchors is well posed: the band is measured from the distance reached.
+  EXPECT_EQ(SelectGeodesicRegion(mesh, 0, 0.1, 10.0, 0.1, region), "");
+  EXPECT_NEAR(region.Radius, std::sqrt(2.0), 1e-12);
 
   std::vector<int> labels(mesh.GetNumberOfVertices(), 1);
   EXPECT_NE(SelectLabeledRegion(mesh, labels, 0.1, region), ""); // no handle
