@@ -27,7 +27,7 @@ void LocalFrames::Build(const SurfaceMesh& mesh, const std::vector<int>& vertice
     roiRow[vertices[row]] = row;
   }
   this->EdgeRoiRow.assign(n, -1);
-  this->EdgeRestEnd.resize(n, 3);
+  this->EdgeRestEnd.setZero(n, 3);
   this->Coefficients.setZero(n, 3);
   this->RestDelta = restDelta;
   this->HasFrame.assign(n, 0);
@@ -35,19 +35,30 @@ void LocalFrames::Build(const SurfaceMesh& mesh, const std::vector<int>& vertice
   {
     const int v = vertices[row];
     const Eigen::Vector3d normal = restNormals.row(row).transpose();
+    // The first neighbour unless another is clearly closer to orthogonal; edges of zero
+    // length (unmerged coincident points) cannot carry a direction.
     int best = -1;
     double bestCosine = std::numeric_limits<double>::infinity();
     for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
     {
       const Eigen::Vector3d edge = positions[*w] - positions[v];
-      // Near-ties (flat rings, where every edge is orthogonal to n) go to the first neighbour,
+      const double length = edge.norm();
+      if (!(length > 0.0))
+      {
+        continue;
+      }
+      // Near-ties (flat rings, where every edge is orthogonal to n) keep the first neighbour,
       // so that the last bits of the coordinates do not pick the frame.
-      const double cosine = std::abs(edge.dot(normal)) / edge.norm();
-      if (cosine < bestCosine - 1e-6)
+      const double cosine = std::abs(edge.dot(normal)) / length;
+      if (best < 0 || cosine < bestCosine - 1e-6)
       {
         bestCosine = cosine;
         best = *w;
       }
+    }
+    if (best < 0)
+    {
+      continue; // no frame: Rotate keeps this delta as it is
     }
     this->EdgeRoiRow[row] = roiRow[best];
     this->EdgeRestEnd.row(row) = positions[best].transpose();
@@ -63,21 +74,25 @@ Positions LocalFrames::Rotate(
 {
   Positions rotated(roiPositions.rows(), 3);
   loop(0, static_cast<int>(roiPositions.rows()), [&](int first, int last) {
-  for (int row = first; row < last; ++row)
-  {
-    const Eigen::Vector3d normal = normals.row(row).transpose();
-    const int end = this->EdgeRoiRow[row];
-    const Eigen::Vector3d edge =
-      (end >= 0 ? roiPositions.row(end) : this->EdgeRestEnd.row(row)) - roiPositions.row(row);
-    const Eigen::Vector3d u = Tangent(edge, normal);
-    if (!this->HasFrame[row] || normal.squaredNorm() == 0.0 || u.squaredNorm() == 0.0)
+    for (int row = first; row < last; ++row)
     {
-      rotated.row(row) = this->RestDelta.row(row); // no frame: leave delta as it was
-      continue;
+      // Without a frame (at rest or now), delta stays as it was.
+      rotated.row(row) = this->RestDelta.row(row);
+      const Eigen::Vector3d normal = normals.row(row).transpose();
+      if (!this->HasFrame[row] || !(normal.squaredNorm() > 0.0))
+      {
+        continue;
+      }
+      const int end = this->EdgeRoiRow[row];
+      const Eigen::Vector3d edge =
+        (end >= 0 ? roiPositions.row(end) : this->EdgeRestEnd.row(row)) - roiPositions.row(row);
+      const Eigen::Vector3d u = Tangent(edge, normal);
+      if (u.squaredNorm() > 0.0)
+      {
+        const Eigen::Vector3d c = this->Coefficients.row(row).transpose();
+        rotated.row(row) = (c[0] * normal + c[1] * u + c[2] * normal.cross(u)).transpose();
+      }
     }
-    const Eigen::Vector3d c = this->Coefficients.row(row).transpose();
-    rotated.row(row) = (c[0] * normal + c[1] * u + c[2] * normal.cross(u)).transpose();
-  }
   });
   return rotated;
 }
