@@ -52,7 +52,7 @@ double SecondsSince(Clock::time_point start)
 }
 
 template <typename Solver>
-void SetOrdering(Solver&, FillOrdering)
+void Configure(Solver&, FillOrdering)
 {
 }
 
@@ -64,9 +64,10 @@ double PredictedFactorBytes(Solver&)
 }
 
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
-void SetOrdering(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver, FillOrdering ordering)
+void Configure(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver, FillOrdering ordering)
 {
   cholmod_common& common = solver.cholmod();
+  common.print = 0; // failures reach the caller as messages, not as CHOLMOD's own printing
   common.nmethods = 1;
   common.method[0].ordering = ordering == FillOrdering::AMD ? CHOLMOD_AMD
     : ordering == FillOrdering::METIS                       ? CHOLMOD_METIS
@@ -94,7 +95,7 @@ std::unique_ptr<SparseCholesky::Backend> FactorWith(
   const SparseMatrix& matrix, FillOrdering ordering, double maximumBytes, FactorReport& report)
 {
   auto backend = std::make_unique<EigenBackend<Solver>>();
-  SetOrdering(backend->Factor, ordering);
+  Configure(backend->Factor, ordering);
   Clock::time_point start = Clock::now();
   backend->Factor.analyzePattern(matrix);
   report.AnalysisSeconds = SecondsSince(start);
