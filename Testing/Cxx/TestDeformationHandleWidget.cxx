@@ -1,0 +1,269 @@
+// Drives vtkDeformationHandleWidget with recorded events, as VTK's BoxWidget2 test does: place
+// the handle by clicking the surface, drag it, turn it, resize the ROI, release. Checks the
+// handle transform and the filter's output numerically, the factorization count, and the final
+// frame against a baseline. A second case deletes the widget in the middle of a drag.
+// Usage: TestDeformationHandleWidget <case> -V <baseline.png> -T <temp folder>
+#include "EditingScene.h"
+
+#include "vtkDeformationHandleRepresentation.h"
+#include "vtkDeformationHandleWidget.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkInteractorEventRecorder.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindowInteractor.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+int failures = 0;
+const int ShiftModifier = 1;
+const int ControlModifier = 2;
+
+void Check(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+
+struct Scene
+{
+  vtkNew<vtkLaplacianDeformationFilter> Filter;
+  vtkSmartPointer<vtkPolyData> Rest;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderWindowInteractor> Interactor;
+  vtkNew<vtkInteractorEventRecorder> Recorder;
+  vtkNew<vtkActor> Surface;
+
+  Scene()
+  {
+    vtkNew<vtkBumpyPlaneSource> source;
+    source->SetResolution(60);
+    source->Update();
+    this->Rest = source->GetOutput();
+    this->Filter->SetInputData(this->Rest);
+    this->Filter->SetHandleCenter(0.5, 0.5, 0.0);
+    this->Filter->SetHandleRadius(0.06);
+    this->Filter->SetROIRadius(0.4);
+    this->Filter->SetRotationModeToExplicit();
+    this->Filter->Update();
+    const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
+    this->Renderer = EditingScene::MakeRenderer(this->Filter->GetOutput(), full);
+    vtkActor* actor = vtkActor::SafeDownCast(this->Renderer->GetActors()->GetItemAsObject(0));
+    actor->GetMapper()->SetInputConnection(this->Filter->GetOutputPort());
+    this->Surface->ShallowCopy(actor);
+    this->Window->SetSize(500, 500);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
+    this->Interactor->SetRenderWindow(this->Window);
+    vtkNew<vtkInteractorStyleTrackballCamera> style;
+    this->Interactor->SetInteractorStyle(style);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.5, 0.5, 0.1);
+    camera->SetPosition(0.5, -1.2, 1.4);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    this->Renderer->ResetCameraClippingRange(); // pick rays span the clipping range
+    this->Recorder->SetInteractor(this->Interactor);
+    this->Recorder->ReadFromInputStringOn();
+    this->Window->Render();
+  }
+
+  vtkActor* SurfaceActor()
+  {
+    return vtkActor::SafeDownCast(this->Renderer->GetActors()->GetItemAsObject(0));
+  }
+
+  void Display(const double world[3], double display[2])
+  {
+    this->Renderer->SetWorldPoint(world[0], world[1], world[2], 1.0);
+    this->Renderer->WorldToDisplay();
+    display[0] = this->Renderer->GetDisplayPoint()[0];
+    display[1] = this->Renderer->GetDisplayPoint()[1];
+  }
+
+  void Play(const std::string& events)
+  {
+    this->Recorder->SetInputString(events.c_str());
+    this->Recorder->Play();
+  }
+};
+
+std::string Event(const char* name, double x, double y, int modifiers = 0)
+{
+  // The recorder's stream version 1: event x y ctrl shift keycode repeat keysym.
+  char line[128];
+  std::snprintf(line, sizeof(line), "%s %d %d %d %d 0 0 i\n", name, static_cast<int>(std::lround(x)),
+    static_cast<int>(std::lround(y)), (modifiers & ControlModifier) ? 1 : 0,
+    (modifiers & ShiftModifier) ? 1 : 0);
+  return line;
+}
+
+// Press at `from`, move in steps along `path(t)` for t in (0, 1], release.
+template <typename Path>
+std::string Drag(const double from[2], Path path, int modifiers = 0)
+{
+  std::string events = Event("MouseMoveEvent", from[0], from[1], modifiers) +
+    Event("LeftButtonPressEvent", from[0], from[1], modifiers);
+  for (int step = 1; step <= 10; ++step)
+  {
+    double at[2];
+    path(step / 10.0, at);
+    events += Event("MouseMoveEvent", at[0], at[1], modifiers);
+  }
+  double end[2];
+  path(1.0, end);
+  return events + Event("LeftButtonReleaseEvent", end[0], end[1], modifiers);
+}
+
+int PlaceDragRotateResize(int argc, char* argv[])
+{
+  Scene scene;
+  vtkNew<vtkDeformationHandleWidget> widget;
+  widget->SetInteractor(scene.Interactor);
+  widget->SetDeformationFilter(scene.Filter);
+  widget->SetSurfaceProp(scene.SurfaceActor());
+  widget->On();
+  scene.Window->Render();
+  vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
+    int* counts = static_cast<int*>(data);
+    counts[event == vtkCommand::StartInteractionEvent ? 0 : (event == vtkCommand::InteractionEvent ? 1 : 2)]++;
+  });
+  int counts[3] = { 0, 0, 0 };
+  counter->SetClientData(counts);
+  widget->AddObserver(vtkCommand::StartInteractionEvent, counter);
+  widget->AddObserver(vtkCommand::InteractionEvent, counter);
+  widget->AddObserver(vtkCommand::EndInteractionEvent, counter);
+
+  // 1. Place: click the surface at (0.7, 0.5).
+  const double target[3] = { 0.7, 0.5, 0.0 };
+  double click[2];
+  scene.Display(target, click);
+  scene.Play(Event("MouseMoveEvent", click[0], click[1]) +
+    Event("LeftButtonPressEvent", click[0], click[1]) +
+    Event("LeftButtonReleaseEvent", click[0], click[1]));
+  const double* center = scene.Filter->GetHandleCenter();
+  // The click lands on the front of the bump there, a little before its apex.
+  Check(std::hypot(center[0] - 0.7, center[1] - 0.5) < 0.06, "handle placed at the picked vertex");
+  scene.Window->Render();
+  const int factorizations = scene.Filter->GetNumberOfFactorizations();
+
+  // 2. Translate: drag the sphere 90 pixels up.
+  double at[2];
+  double current[3];
+  rep->GetCurrentCenter(current);
+  scene.Display(current, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 90.0 * t; }));
+  double moved[3];
+  rep->GetCurrentCenter(moved);
+  double translation[3];
+  vtkMath::Subtract(moved, current, translation);
+  Check(vtkMath::Norm(translation) > 0.1, "the drag moved the handle");
+  Check(translation[2] > 0.05, "screen up moves the handle up");
+  double back[2];
+  scene.Display(moved, back);
+  Check(std::abs(back[0] - at[0]) < 2.0 && std::abs(back[1] - (at[1] + 90.0)) < 2.0,
+    "the handle follows the cursor in the view plane");
+  // The surface followed: the handle vertices sit on their targets.
+  vtkPolyData* output = scene.Filter->GetOutput();
+  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+    {
+      double expected[3];
+      rep->GetTransform()->TransformPoint(scene.Rest->GetPoint(i), expected);
+      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
+    }
+  }
+  Check(worst < 2e-3, "the filter's handle vertices follow the widget's transform");
+
+  // 3. Rotate: sweep a quarter turn along the ring.
+  rep->GetCurrentCenter(current);
+  scene.Display(current, at);
+  double edge[3] = { current[0] + 1.4 * rep->GetHandleRadius(), current[1], current[2] };
+  double ringPoint[2];
+  scene.Display(edge, ringPoint);
+  const double radius = std::hypot(ringPoint[0] - at[0], ringPoint[1] - at[1]);
+  scene.Play(Drag(ringPoint, [&](double t, double p[2]) {
+    p[0] = at[0] + radius * std::cos(0.5 * vtkMath::Pi() * t);
+    p[1] = at[1] + radius * std::sin(0.5 * vtkMath::Pi() * t);
+  }));
+  vtkMatrix4x4* m = rep->GetTransform()->GetMatrix();
+  const double trace = m->GetElement(0, 0) + m->GetElement(1, 1) + m->GetElement(2, 2);
+  const double angle = vtkMath::DegreesFromRadians(std::acos(std::min(1.0, (trace - 1.0) / 2.0)));
+  std::cout << "rotation " << angle << " degrees, translation " << vtkMath::Norm(translation) << "\n";
+  Check(std::abs(angle - 90.0) < 5.0, "a quarter turn on the ring rotates the handle 90 degrees");
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations,
+    "moving and turning the handle does not refactor");
+
+  // 4. Resize the ROI with Shift: one refactorization, on release.
+  rep->GetCurrentCenter(current);
+  scene.Display(current, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0] + 60.0 * t; p[1] = at[1]; },
+    ShiftModifier));
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations + 1,
+    "resizing the ROI refactors once");
+  Check(std::abs(scene.Filter->GetROIRadius() - rep->GetROIRadius()) < 1e-12,
+    "the filter gets the new ROI radius");
+  Check(counts[0] == 4 && counts[2] == 4 && counts[1] >= 30, "interaction events fired");
+
+  scene.Window->Render();
+  const int image = vtkRegressionTestImageThreshold(scene.Window, 0.05);
+  Check(image == vtkRegressionTester::PASSED, "the final frame matches the baseline");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+int DeleteMidInteraction()
+{
+  Scene scene;
+  double at[2];
+  {
+    vtkNew<vtkDeformationHandleWidget> widget;
+    widget->SetInteractor(scene.Interactor);
+    widget->SetDeformationFilter(scene.Filter);
+    widget->SetSurfaceProp(scene.SurfaceActor());
+    widget->On();
+    scene.Window->Render();
+    double current[3];
+    widget->GetDeformationHandleRepresentation()->GetCurrentCenter(current);
+    scene.Display(current, at);
+    scene.Play(Event("MouseMoveEvent", at[0], at[1]) + Event("LeftButtonPressEvent", at[0], at[1]) +
+      Event("MouseMoveEvent", at[0], at[1] + 20.0));
+  } // the widget goes away while the button is down
+  scene.Play(Event("MouseMoveEvent", at[0], at[1] + 40.0) +
+    Event("LeftButtonReleaseEvent", at[0], at[1] + 40.0));
+  scene.Window->Render();
+  Check(scene.Filter->GetNumberOfFactorizations() >= 1, "the filter still works");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const std::string name = argc > 1 ? argv[1] : "";
+  if (name == "PlaceDragRotateResize")
+  {
+    return PlaceDragRotateResize(argc, argv);
+  }
+  if (name == "DeleteMidInteraction")
+  {
+    return DeleteMidInteraction();
+  }
+  std::cerr << "usage: " << argv[0] << " PlaceDragRotateResize|DeleteMidInteraction [-V baseline -T temp]\n";
+  return EXIT_FAILURE;
+}

@@ -1,0 +1,258 @@
+#include "vtkDeformationHandleWidget.h"
+
+#include "vtkDeformationHandleRepresentation.h"
+#include "vtkLaplacianDeformationFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellPicker.h"
+#include "vtkCommand.h"
+#include "vtkDataSet.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkProp.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTransform.h"
+#include "vtkWidgetCallbackMapper.h"
+#include "vtkWidgetEvent.h"
+
+#include <vector>
+
+vtkStandardNewMacro(vtkDeformationHandleWidget);
+vtkCxxSetObjectMacro(vtkDeformationHandleWidget, SurfaceProp, vtkProp);
+
+struct vtkDeformationHandleWidget::vtkInternals
+{
+  vtkNew<vtkCellPicker> SurfacePicker;
+  // The rest surfaces before each commit.
+  std::vector<vtkSmartPointer<vtkPolyData>> Commits;
+};
+
+vtkDeformationHandleWidget::vtkDeformationHandleWidget()
+  : Internals(new vtkInternals)
+{
+  this->Internals->SurfacePicker->SetTolerance(0.002);
+  this->Internals->SurfacePicker->PickFromListOn();
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonPressEvent, vtkWidgetEvent::Select,
+    this, vtkDeformationHandleWidget::SelectAction);
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonReleaseEvent,
+    vtkWidgetEvent::EndSelect, this, vtkDeformationHandleWidget::EndSelectAction);
+  this->CallbackMapper->SetCallbackMethod(
+    vtkCommand::MouseMoveEvent, vtkWidgetEvent::Move, this, vtkDeformationHandleWidget::MoveAction);
+}
+
+vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
+{
+  this->SetDeformationFilter(nullptr);
+  this->SetSurfaceProp(nullptr);
+}
+
+void vtkDeformationHandleWidget::SetRepresentation(vtkDeformationHandleRepresentation* representation)
+{
+  this->Superclass::SetWidgetRepresentation(representation);
+}
+
+vtkDeformationHandleRepresentation* vtkDeformationHandleWidget::GetDeformationHandleRepresentation()
+{
+  return vtkDeformationHandleRepresentation::SafeDownCast(this->WidgetRep);
+}
+
+void vtkDeformationHandleWidget::CreateDefaultRepresentation()
+{
+  if (!this->WidgetRep)
+  {
+    this->WidgetRep = vtkDeformationHandleRepresentation::New();
+  }
+}
+
+void vtkDeformationHandleWidget::SetDeformationFilter(vtkLaplacianDeformationFilter* filter)
+{
+  if (this->DeformationFilter == filter)
+  {
+    return;
+  }
+  if (this->DeformationFilter)
+  {
+    this->DeformationFilter->UnRegister(this);
+  }
+  this->DeformationFilter = filter;
+  if (filter)
+  {
+    filter->Register(this);
+    this->CreateDefaultRepresentation();
+    vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+    rep->SetCenter(filter->GetHandleCenter());
+    rep->SetHandleRadius(filter->GetHandleRadius());
+    rep->SetROIRadius(filter->GetROIRadius());
+    filter->SetHandleTransform(rep->GetTransform());
+  }
+  this->Modified();
+}
+
+void vtkDeformationHandleWidget::PushToFilter()
+{
+  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+  if (this->DeformationFilter && rep)
+  {
+    this->DeformationFilter->SetHandleCenter(rep->GetCenter());
+    this->DeformationFilter->SetHandleRadius(rep->GetHandleRadius());
+    this->DeformationFilter->SetROIRadius(rep->GetROIRadius());
+  }
+}
+
+bool vtkDeformationHandleWidget::PickSurface(int x, int y, double point[3])
+{
+  if (!this->SurfaceProp || !this->CurrentRenderer)
+  {
+    return false;
+  }
+  vtkCellPicker* picker = this->Internals->SurfacePicker;
+  picker->InitializePickList();
+  picker->AddPickList(this->SurfaceProp);
+  picker->Pick(x, y, 0.0, this->CurrentRenderer);
+  if (!picker->GetPath() || picker->GetPointId() < 0)
+  {
+    return false;
+  }
+  // The picked vertex at rest: the filter's input, whose point ids the output keeps.
+  vtkDataSet* rest = this->DeformationFilter
+    ? vtkDataSet::SafeDownCast(this->DeformationFilter->GetInputDataObject(0, 0))
+    : picker->GetDataSet();
+  if (!rest || picker->GetPointId() >= rest->GetNumberOfPoints())
+  {
+    return false;
+  }
+  rest->GetPoint(picker->GetPointId(), point);
+  return true;
+}
+
+void vtkDeformationHandleWidget::PlaceHandle(const double point[3])
+{
+  this->CreateDefaultRepresentation();
+  this->GetDeformationHandleRepresentation()->SetCenter(point);
+  this->PushToFilter();
+  this->Render();
+}
+
+void vtkDeformationHandleWidget::ResetHandle()
+{
+  this->CreateDefaultRepresentation();
+  this->GetDeformationHandleRepresentation()->ResetTransform();
+  this->Render();
+}
+
+void vtkDeformationHandleWidget::CommitEdit()
+{
+  vtkLaplacianDeformationFilter* filter = this->DeformationFilter;
+  vtkPolyData* rest = filter ? vtkPolyData::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
+  if (!rest)
+  {
+    return;
+  }
+  filter->Update();
+  auto edited = vtkSmartPointer<vtkPolyData>::New();
+  edited->DeepCopy(filter->GetOutput());
+  this->Internals->Commits.emplace_back(rest);
+  filter->SetInputData(edited);
+  double center[3];
+  this->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  this->PlaceHandle(center);
+}
+
+bool vtkDeformationHandleWidget::UndoCommit()
+{
+  if (this->Internals->Commits.empty() || !this->DeformationFilter)
+  {
+    return false;
+  }
+  this->DeformationFilter->SetInputData(this->Internals->Commits.back());
+  this->Internals->Commits.pop_back();
+  this->ResetHandle();
+  return true;
+}
+
+void vtkDeformationHandleWidget::SelectAction(vtkAbstractWidget* widget)
+{
+  auto* self = static_cast<vtkDeformationHandleWidget*>(widget);
+  vtkDeformationHandleRepresentation* rep = self->GetDeformationHandleRepresentation();
+  const int x = self->Interactor->GetEventPosition()[0];
+  const int y = self->Interactor->GetEventPosition()[1];
+  self->CurrentRenderer = self->Interactor->FindPokedRenderer(x, y);
+  rep->SetRenderer(self->CurrentRenderer);
+  const int state = rep->ComputeInteractionState(x, y);
+  const bool shift = self->Interactor->GetShiftKey() != 0;
+  if (state == vtkDeformationHandleRepresentation::Outside)
+  {
+    double point[3];
+    if (!self->PickSurface(x, y, point))
+    {
+      return; // not ours: the interactor style gets the event
+    }
+    self->EventCallbackCommand->SetAbortFlag(1);
+    self->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
+    self->PlaceHandle(point);
+    self->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
+    return;
+  }
+  using Rep = vtkDeformationHandleRepresentation;
+  rep->SetInteractionState(state == Rep::OnHandle ? (shift ? Rep::ResizingROI : Rep::Translating)
+                                                  : (shift ? Rep::ResizingHandle : Rep::Rotating));
+  rep->SetConstrainToAxis(self->Interactor->GetControlKey() != 0);
+  double position[2] = { static_cast<double>(x), static_cast<double>(y) };
+  rep->StartWidgetInteraction(position);
+  self->Interacting = true;
+  self->GrabFocus(self->EventCallbackCommand);
+  self->EventCallbackCommand->SetAbortFlag(1);
+  self->StartInteraction();
+  self->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
+  self->Render();
+}
+
+void vtkDeformationHandleWidget::MoveAction(vtkAbstractWidget* widget)
+{
+  auto* self = static_cast<vtkDeformationHandleWidget*>(widget);
+  if (!self->Interacting)
+  {
+    return;
+  }
+  double position[2] = { static_cast<double>(self->Interactor->GetEventPosition()[0]),
+    static_cast<double>(self->Interactor->GetEventPosition()[1]) };
+  self->GetDeformationHandleRepresentation()->WidgetInteraction(position);
+  self->EventCallbackCommand->SetAbortFlag(1);
+  self->InvokeEvent(vtkCommand::InteractionEvent, nullptr);
+  self->Render(); // the filter re-solves for the new transform as the surface renders
+}
+
+void vtkDeformationHandleWidget::EndSelectAction(vtkAbstractWidget* widget)
+{
+  auto* self = static_cast<vtkDeformationHandleWidget*>(widget);
+  if (!self->Interacting)
+  {
+    return;
+  }
+  vtkDeformationHandleRepresentation* rep = self->GetDeformationHandleRepresentation();
+  const int state = rep->GetInteractionState();
+  double position[2] = { static_cast<double>(self->Interactor->GetEventPosition()[0]),
+    static_cast<double>(self->Interactor->GetEventPosition()[1]) };
+  rep->EndWidgetInteraction(position);
+  if (state == vtkDeformationHandleRepresentation::ResizingROI ||
+    state == vtkDeformationHandleRepresentation::ResizingHandle)
+  {
+    self->PushToFilter(); // one refactorization per resize, on release
+  }
+  self->Interacting = false;
+  self->ReleaseFocus();
+  self->EventCallbackCommand->SetAbortFlag(1);
+  self->EndInteraction();
+  self->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
+  self->Render();
+}
+
+void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DeformationFilter: " << this->DeformationFilter << "\n";
+  os << indent << "SurfaceProp: " << this->SurfaceProp << "\n";
+  os << indent << "Commits: " << this->Internals->Commits.size() << "\n";
+}

@@ -1,0 +1,105 @@
+/**
+ * @class   vtkDeformationHandleWidget
+ * @brief   pick, drag and rotate the handle of a Laplacian edit and watch the surface follow
+ *
+ * vtkDeformationHandleWidget pairs a vtkDeformationHandleRepresentation with a
+ * vtkLaplacianDeformationFilter (SetDeformationFilter): the filter's handle transform becomes
+ * the representation's, so the surface rendered from the filter's output follows the handle
+ * during a drag. Only moving the handle re-solves; the radii reach the filter when a resize
+ * ends, so the region is refactored once per resize.
+ *
+ * Default bindings (left button):
+ * - press on the surface (SetSurfaceProp): put the handle on the picked vertex;
+ * - drag the sphere: translate in the view plane; with Control, along one axis;
+ * - drag the ring: rotate about the view direction;
+ * - Shift + drag the sphere: resize the region of interest; Shift + drag the ring: resize the
+ *   handle.
+ *
+ * ResetHandle() undoes the current edit, CommitEdit() makes the edited surface the rest surface
+ * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
+ * InteractionEvent and EndInteractionEvent.
+ *
+ * @sa vtkDeformationHandleRepresentation vtkLaplacianDeformationFilter
+ */
+#ifndef vtkDeformationHandleWidget_h
+#define vtkDeformationHandleWidget_h
+
+#include "vtkAbstractWidget.h"
+#include "vtkLaplacianEditingWidgetsModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkDeformationHandleRepresentation;
+class vtkLaplacianDeformationFilter;
+class vtkProp;
+
+class VTKLAPLACIANEDITINGWIDGETS_EXPORT vtkDeformationHandleWidget : public vtkAbstractWidget
+{
+public:
+  static vtkDeformationHandleWidget* New();
+  vtkTypeMacro(vtkDeformationHandleWidget, vtkAbstractWidget);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  void SetRepresentation(vtkDeformationHandleRepresentation* representation);
+  vtkDeformationHandleRepresentation* GetDeformationHandleRepresentation();
+  void CreateDefaultRepresentation() override;
+
+  /**
+   * Pairs the widget with a filter: the representation takes the filter's handle centre and
+   * radii, and the filter takes the representation's transform as its handle transform.
+   */
+  void SetDeformationFilter(vtkLaplacianDeformationFilter* filter);
+  vtkGetObjectMacro(DeformationFilter, vtkLaplacianDeformationFilter);
+
+  /**
+   * The prop showing the surface; a press on it places the handle.
+   */
+  void SetSurfaceProp(vtkProp* prop);
+  vtkGetObjectMacro(SurfaceProp, vtkProp);
+
+  /**
+   * Places the handle on the input vertex nearest `point` (the rest surface), with the
+   * identity transform.
+   */
+  void PlaceHandle(const double point[3]);
+
+  /**
+   * Undo the current edit: the identity transform.
+   */
+  void ResetHandle();
+
+  /**
+   * Make the edited surface the rest surface of the next edit (the filter's input becomes a
+   * copy of its output), keeping the handle where it is.
+   */
+  void CommitEdit();
+
+  /**
+   * Go back to the rest surface before the last commit. Returns false if there is none.
+   */
+  bool UndoCommit();
+
+protected:
+  vtkDeformationHandleWidget();
+  ~vtkDeformationHandleWidget() override;
+
+  static void SelectAction(vtkAbstractWidget* widget);
+  static void MoveAction(vtkAbstractWidget* widget);
+  static void EndSelectAction(vtkAbstractWidget* widget);
+
+  bool PickSurface(int x, int y, double point[3]);
+  void PushToFilter();
+
+  vtkLaplacianDeformationFilter* DeformationFilter = nullptr;
+  vtkProp* SurfaceProp = nullptr;
+  bool Interacting = false;
+
+private:
+  vtkDeformationHandleWidget(const vtkDeformationHandleWidget&) = delete;
+  void operator=(const vtkDeformationHandleWidget&) = delete;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif
