@@ -31,6 +31,9 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
   this->SelectedHandleProperty = vtkProperty::New();
   this->SelectedHandleProperty->SetColor(1.0, 0.55, 0.0);
   this->SelectedHandleProperty->SetOpacity(0.6);
+  // Only the front of the translucent sphere: its back would blend with it in triangle order.
+  this->HandleProperty->BackfaceCullingOn();
+  this->SelectedHandleProperty->BackfaceCullingOn();
   this->RingProperty = vtkProperty::New();
   this->RingProperty->SetColor(0.2, 0.45, 0.95);
 

@@ -1,0 +1,220 @@
+// An interactive Laplacian editor: open a mesh (or the embedded bumpy plane), drag the handle,
+// watch the surface follow.
+//
+//   InteractiveEditor [--mode none|explicit|implicit] [--offscreen SCREENSHOT.png] [MESH]
+//
+// Mouse: click the surface to place the handle; drag the sphere to move it (Control: along one
+// axis), the ring to turn it; Shift + drag the sphere resizes the region, Shift + drag the ring
+// the handle. Keys: m rotation mode, r reset, c commit the edit, u undo the commit,
+// s save edited.vtp, q quit. With --offscreen it plays a scripted drag instead and saves a
+// screenshot (no window needs to show).
+#include "EditingScene.h"
+#include "MeshReader.h"
+
+#include "vtkDeformationHandleRepresentation.h"
+#include "vtkDeformationHandleWidget.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkInteractorEventRecorder.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkPNGWriter.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkTextActor.h"
+#include "vtkTextProperty.h"
+#include "vtkWindowToImageFilter.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+namespace
+{
+const char* Help =
+  "mouse: click surface = place handle | drag sphere = move (Ctrl: one axis) | drag ring = turn\n"
+  "       Shift+drag sphere = region size | Shift+drag ring = handle size\n"
+  "keys:  m rotation mode | r reset | c commit edit | u undo commit | s save edited.vtp | q quit";
+const char* ModeNames[] = { "none", "explicit", "implicit" };
+
+struct Editor
+{
+  vtkLaplacianDeformationFilter* Filter;
+  vtkDeformationHandleWidget* Widget;
+  vtkTextActor* Status;
+};
+
+void ShowStatus(Editor& editor)
+{
+  char text[256];
+  std::snprintf(text, sizeof(text), "rotation mode: %s   ROI vertices: %d",
+    ModeNames[editor.Filter->GetRotationMode()], editor.Filter->GetNumberOfROIVertices());
+  editor.Status->SetInput(text);
+}
+
+void OnKey(vtkObject* caller, unsigned long, void* data, void*)
+{
+  auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
+  Editor& editor = *static_cast<Editor*>(data);
+  const std::string key = interactor->GetKeySym() ? interactor->GetKeySym() : "";
+  if (key == "m")
+    editor.Filter->SetRotationMode((editor.Filter->GetRotationMode() + 1) % 3);
+  else if (key == "r")
+    editor.Widget->ResetHandle();
+  else if (key == "c")
+    editor.Widget->CommitEdit();
+  else if (key == "u")
+    editor.Widget->UndoCommit();
+  else if (key == "s")
+  {
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputConnection(editor.Filter->GetOutputPort());
+    writer->SetFileName("edited.vtp");
+    writer->Write();
+    std::cout << "saved edited.vtp\n";
+  }
+  else
+    return;
+  editor.Filter->Update();
+  ShowStatus(editor);
+  interactor->Render();
+}
+
+std::string Event(const char* name, double x, double y)
+{
+  char line[96];
+  std::snprintf(line, sizeof(line), "%s %d %d 0 0 0 0 i\n", name, static_cast<int>(x), static_cast<int>(y));
+  return line;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::string meshPath, screenshot;
+  int mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--mode" && i + 1 < argc)
+    {
+      const std::string name = argv[++i];
+      mode = name == "none" ? 0 : (name == "implicit" ? 2 : 1);
+    }
+    else if (arg == "--offscreen" && i + 1 < argc)
+      screenshot = argv[++i];
+    else if (arg == "-h" || arg == "--help")
+    {
+      std::cout << "usage: " << argv[0]
+                << " [--mode none|explicit|implicit] [--offscreen SCREENSHOT.png] [MESH]\n"
+                << Help << "\n";
+      return EXIT_SUCCESS;
+    }
+    else
+      meshPath = arg;
+  }
+
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (meshPath.empty())
+  {
+    mesh = EditingScene::SetUpBumpyPlaneEdit(filter);
+    filter->SetHandleTransform(nullptr);
+  }
+  else
+  {
+    std::string error;
+    mesh = MeshReader::Read(meshPath, error);
+    if (!mesh)
+    {
+      std::cerr << "error: " << error << "\n";
+      return EXIT_FAILURE;
+    }
+    // Start with a handle on the first point, radii relative to the mesh size.
+    filter->SetInputData(mesh);
+    filter->SetHandleCenter(mesh->GetPoint(0));
+    filter->SetHandleRadius(0.04 * mesh->GetLength());
+    filter->SetROIRadius(0.25 * mesh->GetLength());
+  }
+  filter->SetRotationMode(mode);
+  filter->Update();
+
+  const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
+  vtkSmartPointer<vtkRenderer> renderer = EditingScene::MakeRenderer(filter->GetOutput(), full);
+  auto* surface = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
+  surface->GetMapper()->SetInputConnection(filter->GetOutputPort());
+  vtkNew<vtkTextActor> help, status;
+  help->SetInput(Help);
+  help->GetTextProperty()->SetFontSize(13);
+  help->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  help->SetDisplayPosition(10, 10);
+  status->GetTextProperty()->SetFontSize(15);
+  status->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  status->GetTextProperty()->SetVerticalJustificationToTop();
+  status->GetPositionCoordinate()->SetCoordinateSystemToNormalizedDisplay();
+  status->SetPosition(0.01, 0.97);
+  renderer->AddActor2D(help);
+  renderer->AddActor2D(status);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(900, 700);
+  window->SetWindowName("Laplacian mesh editing");
+  window->AddRenderer(renderer);
+  window->SetOffScreenRendering(!screenshot.empty());
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(window);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  interactor->SetInteractorStyle(style);
+  renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.0);
+  renderer->ResetCamera();
+
+  vtkNew<vtkDeformationHandleWidget> widget;
+  widget->SetInteractor(interactor);
+  widget->SetDeformationFilter(filter);
+  widget->SetSurfaceProp(surface);
+  widget->On();
+
+  Editor editor{ filter, widget, status };
+  ShowStatus(editor);
+  vtkNew<vtkCallbackCommand> keys;
+  keys->SetCallback(OnKey);
+  keys->SetClientData(&editor);
+  interactor->AddObserver(vtkCommand::KeyPressEvent, keys);
+  interactor->Initialize();
+  window->Render();
+
+  if (screenshot.empty())
+  {
+    interactor->Start();
+    return EXIT_SUCCESS;
+  }
+
+  // Offscreen: drag the handle up by a fifth of the window, as a user would, and save.
+  double center[3];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
+  renderer->WorldToDisplay();
+  const double x = renderer->GetDisplayPoint()[0], y = renderer->GetDisplayPoint()[1];
+  std::string events = Event("MouseMoveEvent", x, y) + Event("LeftButtonPressEvent", x, y);
+  for (int step = 1; step <= 10; ++step)
+  {
+    events += Event("MouseMoveEvent", x, y + 14.0 * step);
+  }
+  events += Event("LeftButtonReleaseEvent", x, y + 140.0);
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  recorder->SetInteractor(interactor);
+  recorder->ReadFromInputStringOn();
+  recorder->SetInputString(events.c_str());
+  recorder->Play();
+  ShowStatus(editor);
+  window->Render();
+  double moved[3];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(moved);
+  const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(center, moved));
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(screenshot.c_str());
+  png->Write();
+  std::cout << "handle moved by " << distance << "; wrote " << screenshot << "\n";
+  return distance > 0.0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
