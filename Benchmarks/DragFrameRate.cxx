@@ -1,17 +1,25 @@
-// Frames per second of a simulated handle drag: each frame sets a new handle transform, updates
-// the filter and renders its output in an offscreen window (run under Xvfb). Prints one JSON
-// line. Uses only the filter's basic API, so the same program measures older versions too.
+// Frames per second of a handle drag: each frame moves the handle, updates the filter and
+// renders its output (run under Xvfb). Prints one JSON line.
 //
-//   DragFrameRate MESH ROI_FRACTION [FRAMES] [MODE]
+//   DragFrameRate MESH ROI_FRACTION [FRAMES] [MODE] [widget]
 //
 // The handle sits on vertex 0 with a radius of 3% of the bounding-box diagonal; the ROI radius
-// is ROI_FRACTION of the diagonal; the drag lifts the handle by 10% of the diagonal along +z
-// over FRAMES frames (default 60). MODE is the rotation mode number (0 none, default).
+// is ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode number (0
+// none, default). Without "widget" each frame sets the handle transform directly, lifting the
+// handle by 10% of the diagonal over the drag (this path uses only the filter's basic API, so
+// the same program measures older versions too). With "widget" a vtkDeformationHandleWidget is
+// dragged by recorded mouse events, 2 pixels up per frame, as a user would.
 #include "MeshReader.h"
 
 #include "vtkLaplacianDeformationFilter.h"
 
+#include "vtkDeformationHandleRepresentation.h"
+#include "vtkDeformationHandleWidget.h"
+
 #include "vtkActor.h"
+#include "vtkInteractorEventRecorder.h"
+#include "vtkMath.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -26,7 +34,7 @@ int main(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::cerr << "usage: " << argv[0] << " MESH ROI_FRACTION [FRAMES] [MODE]\n";
+    std::cerr << "usage: " << argv[0] << " MESH ROI_FRACTION [FRAMES] [MODE] [widget]\n";
     return EXIT_FAILURE;
   }
   std::string error;
@@ -61,18 +69,63 @@ int main(int argc, char* argv[])
   window->Render(); // select and factor
   renderer->ResetCamera();
 
-  const auto start = std::chrono::steady_clock::now();
-  for (int frame = 1; frame <= frames; ++frame)
+  const bool useWidget = argc > 5 && std::string(argv[5]) == "widget";
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<vtkDeformationHandleWidget> widget;
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  std::string events;
+  if (useWidget)
   {
-    drag->Identity();
-    drag->Translate(0.0, 0.0, 0.1 * diagonal * frame / frames);
+    interactor->SetRenderWindow(window);
+    widget->SetInteractor(interactor);
+    widget->SetDeformationFilter(filter);
+    widget->On();
+    renderer->ResetCameraClippingRange();
     window->Render();
+    double center[3];
+    widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+    renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
+    renderer->WorldToDisplay();
+    const int x = static_cast<int>(renderer->GetDisplayPoint()[0]);
+    const int y = static_cast<int>(renderer->GetDisplayPoint()[1]);
+    auto line = [](const char* name, int px, int py) {
+      return std::string(name) + " " + std::to_string(px) + " " + std::to_string(py) + " 0 0 0 0 i\n";
+    };
+    events = line("MouseMoveEvent", x, y) + line("LeftButtonPressEvent", x, y);
+    for (int frame = 1; frame <= frames; ++frame)
+    {
+      events += line("MouseMoveEvent", x, y + 2 * frame);
+    }
+    events += line("LeftButtonReleaseEvent", x, y + 2 * frames);
+    recorder->SetInteractor(interactor);
+    recorder->ReadFromInputStringOn();
+    recorder->SetInputString(events.c_str());
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  if (useWidget)
+  {
+    recorder->Play(); // each move renders through the widget
+  }
+  else
+  {
+    for (int frame = 1; frame <= frames; ++frame)
+    {
+      drag->Identity();
+      drag->Translate(0.0, 0.0, 0.1 * diagonal * frame / frames);
+      window->Render();
+    }
   }
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // How far the drag took the handle, to show the frames really moved it.
+  double origin[3] = { 0.0, 0.0, 0.0 }, moved[3];
+  filter->GetHandleTransform()->TransformPoint(origin, moved);
   std::cout << "{\"mesh\": \"" << argv[1] << "\", \"roi_vertices\": "
             << filter->GetNumberOfROIVertices() << ", \"mode\": " << filter->GetRotationMode()
-            << ", \"frames\": " << frames << ", \"frames_per_second\": " << frames / seconds
+            << ", \"driver\": \"" << (useWidget ? "widget" : "transform") << "\", \"frames\": "
+            << frames << ", \"frames_per_second\": " << frames / seconds
+            << ", \"handle_moved\": " << vtkMath::Norm(moved)
             << ", \"factorizations\": " << filter->GetNumberOfFactorizations() << "}\n";
   return EXIT_SUCCESS;
 }
