@@ -8,6 +8,7 @@
 #include "vtkCamera.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
+#include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -16,8 +17,10 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "vtkBumpyPlaneSource.h"
@@ -81,6 +84,17 @@ inline vtkSmartPointer<vtkRenderer> MakeRenderer(vtkPolyData* mesh, const double
   renderer->SetViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   renderer->SetBackground(1.0, 1.0, 1.0);
   return renderer;
+}
+
+/// Writes what `window` shows to a PNG file.
+inline void SaveScreenshot(vtkRenderWindow* window, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  vtkNew<vtkPNGWriter> png;
+  png->SetInputConnection(grab->GetOutputPort());
+  png->SetFileName(path.c_str());
+  png->Write();
 }
 
 /// Bounds of the points of `meshes` that the edit moved or held (EditRole other than fixed).

@@ -17,11 +17,9 @@
 #include "vtkCallbackCommand.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkInteractorStyleTrackballCamera.h"
-#include "vtkPNGWriter.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <cstdio>
@@ -209,12 +207,7 @@ int main(int argc, char* argv[])
   double moved[3];
   widget->GetDeformationHandleRepresentation()->GetCurrentCenter(moved);
   const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(center, moved));
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(screenshot.c_str());
-  png->Write();
+  EditingScene::SaveScreenshot(window, screenshot);
   std::cout << "handle moved by " << distance << "; wrote " << screenshot << "\n";
   return distance > 0.0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -13,9 +13,7 @@
 #include "vtkLaplacianDeformationFilter.h"
 
 #include "vtkMath.h"
-#include "vtkPNGWriter.h"
 #include "vtkTransform.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
@@ -143,12 +141,7 @@ int main(int argc, char* argv[])
   vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeComparisonWindow(
     { before, filter->GetOutput() }, viewDirection, viewUp, 600, 600);
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  vtkNew<vtkPNGWriter> png;
-  png->SetInputConnection(grab->GetOutputPort());
-  png->SetFileName(imagePath.c_str());
-  png->Write();
+  EditingScene::SaveScreenshot(window, imagePath);
   std::cout << "wrote " << meshPath << " and " << imagePath << "\n";
   return EXIT_SUCCESS;
 }

@@ -45,7 +45,6 @@ struct Scene
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderWindowInteractor> Interactor;
   vtkNew<vtkInteractorEventRecorder> Recorder;
-  vtkNew<vtkActor> Surface;
 
   Scene()
   {
@@ -63,7 +62,6 @@ struct Scene
     this->Renderer = EditingScene::MakeRenderer(this->Filter->GetOutput(), full);
     vtkActor* actor = vtkActor::SafeDownCast(this->Renderer->GetActors()->GetItemAsObject(0));
     actor->GetMapper()->SetInputConnection(this->Filter->GetOutputPort());
-    this->Surface->ShallowCopy(actor);
     this->Window->SetSize(500, 500);
     this->Window->SetMultiSamples(0);
     this->Window->AddRenderer(this->Renderer);
@@ -83,6 +81,18 @@ struct Scene
   vtkActor* SurfaceActor()
   {
     return vtkActor::SafeDownCast(this->Renderer->GetActors()->GetItemAsObject(0));
+  }
+
+  // A widget paired with the filter, placing on the surface, switched on.
+  vtkSmartPointer<vtkDeformationHandleWidget> MakeWidget()
+  {
+    auto widget = vtkSmartPointer<vtkDeformationHandleWidget>::New();
+    widget->SetInteractor(this->Interactor);
+    widget->SetDeformationFilter(this->Filter);
+    widget->SetSurfaceProp(this->SurfaceActor());
+    widget->On();
+    this->Window->Render();
+    return widget;
   }
 
   void Display(const double world[3], double display[2])
@@ -130,12 +140,7 @@ std::string Drag(const double from[2], Path path, int modifiers = 0)
 int PlaceDragRotateResize(int argc, char* argv[])
 {
   Scene scene;
-  vtkNew<vtkDeformationHandleWidget> widget;
-  widget->SetInteractor(scene.Interactor);
-  widget->SetDeformationFilter(scene.Filter);
-  widget->SetSurfaceProp(scene.SurfaceActor());
-  widget->On();
-  scene.Window->Render();
+  auto widget = scene.MakeWidget();
   vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
   vtkNew<vtkCallbackCommand> counter;
   counter->SetCallback([](vtkObject*, unsigned long event, void* data, void*) {
@@ -233,12 +238,7 @@ int DeleteMidInteraction()
   Scene scene;
   double at[2];
   {
-    vtkNew<vtkDeformationHandleWidget> widget;
-    widget->SetInteractor(scene.Interactor);
-    widget->SetDeformationFilter(scene.Filter);
-    widget->SetSurfaceProp(scene.SurfaceActor());
-    widget->On();
-    scene.Window->Render();
+    auto widget = scene.MakeWidget();
     double current[3];
     widget->GetDeformationHandleRepresentation()->GetCurrentCenter(current);
     scene.Display(current, at);

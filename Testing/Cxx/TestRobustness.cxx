@@ -46,6 +46,15 @@ void ExpectSoundEdit(vtkPolyData* input, Filter* filter, const double lift[3])
   EXPECT_GT(handles, 0);
 }
 
+// Updates the filter, expecting no error and a sound edit.
+void ExpectCleanEdit(vtkPolyData* input, Filter* filter, const double lift[3])
+{
+  ErrorCatcher errors(filter);
+  filter->Update();
+  EXPECT_EQ(errors.Messages, "");
+  ExpectSoundEdit(input, filter, lift);
+}
+
 vtkSmartPointer<Filter> Lifted(vtkPolyData* input, const double lift[3])
 {
   auto filter = PlaneEdit(input);
@@ -100,10 +109,7 @@ TEST(Degenerate, ZeroAreaAndObtuseTrianglesWithCotangentWeights)
     filter->SetLaplacianWeightsToCotangent();
     filter->SetOperatorOrder(order);
     filter->SetRotationModeToExplicit();
-    ErrorCatcher errors(filter);
-    filter->Update();
-    EXPECT_EQ(errors.Messages, "");
-    ExpectSoundEdit(input, filter, Lift);
+    ExpectCleanEdit(input, filter, Lift);
   }
 }
 
@@ -167,10 +173,7 @@ TEST(Degenerate, NonManifoldEdgesAndVertices)
   {
     auto filter = Lifted(input, Lift);
     filter->SetRotationMode(mode);
-    ErrorCatcher errors(filter);
-    filter->Update();
-    EXPECT_EQ(errors.Messages, "") << "mode " << mode;
-    ExpectSoundEdit(input, filter, Lift);
+    ExpectCleanEdit(input, filter, Lift);
   }
 }
 
@@ -232,10 +235,7 @@ TEST(Degenerate, HolesInTheRegion)
   input->SetPolys(kept);
   auto filter = Lifted(input, Lift);
   filter->SetRotationModeToExplicit();
-  ErrorCatcher errors(filter);
-  filter->Update();
-  EXPECT_EQ(errors.Messages, "");
-  ExpectSoundEdit(input, filter, Lift);
+  ExpectCleanEdit(input, filter, Lift);
 }
 
 TEST(Degenerate, OnlyTheHandlesComponentIsEdited)
