@@ -70,7 +70,7 @@ bool IsIntegerType(int type)
 // Copies a normals array and recomputes the tuples listed in `ids`: normals near the edit are
 // fresh, and all others stay bit-identical to the input's.
 template <typename NormalOf>
-void RefreshNormals(vtkDataSetAttributes* attributes, const std::vector<vtkIdType>& ids,
+void RefreshNormalsArray(vtkDataSetAttributes* attributes, const std::vector<vtkIdType>& ids,
   NormalOf normalOf)
 {
   vtkDataArray* stale = attributes->GetNormals();
@@ -118,8 +118,15 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   std::vector<int> CellVertexOffsets;
   std::vector<int> CellVertices;
 
-  void FindNormalsToRefresh(vtkPolyData* input);
   std::string BuildMesh(vtkPolyData* input, bool mergeCoincidentPoints);
+  // Per-region lookups from input points to ROI rows, the EditRole array, and the normals the
+  // edit can change.
+  void IndexRegion(vtkPolyData* input);
+  void FindNormalsToRefresh(vtkPolyData* input);
+  // A handle transform in the normalized frame: x' = M x + t becomes x'_n = M x_n + s (M c + t - c).
+  le::AffineMap NormalizedMap(vtkLinearTransform* transform) const;
+  // Point and cell normals of the output, refreshed where the ROI moved to `solution`.
+  void RefreshNormals(vtkPolyData* output, const le::Positions& solution) const;
   // The core works on coordinates centred on the input's bounding box and scaled to a unit
   // diagonal, so that offset or tiny models keep their precision.
   le::Vector3 Center = le::Vector3::Zero();
@@ -176,6 +183,99 @@ std::string vtkLaplacianDeformationFilter::vtkInternals::BuildMesh(
     return "The input polygons are all degenerate: no triangle has three distinct corners.";
   }
   return {};
+}
+
+void vtkLaplacianDeformationFilter::vtkInternals::IndexRegion(vtkPolyData* input)
+{
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  const auto& vertexOfPoint = this->Mesh->GetVertexOfPoint();
+  this->RowOfVertex.assign(this->Mesh->GetNumberOfVertices(), -1);
+  for (int k = 0; k < this->Region.GetNumberOfVertices(); ++k)
+  {
+    this->RowOfVertex[this->Region.Vertices[k]] = k;
+  }
+  this->RoiPoints.clear();
+  this->Roles = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  this->Roles->SetName("EditRole");
+  this->Roles->SetNumberOfTuples(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const int k = this->RowOfVertex[vertexOfPoint[i]];
+    if (k >= 0)
+    {
+      this->RoiPoints.emplace_back(i, k);
+    }
+    this->Roles->SetValue(
+      i, static_cast<unsigned char>(k >= 0 ? this->Region.Roles[k] : le::VertexRole::Fixed));
+  }
+  this->FindNormalsToRefresh(input);
+}
+
+le::AffineMap vtkLaplacianDeformationFilter::vtkInternals::NormalizedMap(
+  vtkLinearTransform* transform) const
+{
+  transform->Update();
+  vtkMatrix4x4* m = transform->GetMatrix();
+  Eigen::Matrix3d linear;
+  Eigen::Vector3d translation;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear(r, c) = m->GetElement(r, c);
+    }
+    translation[r] = m->GetElement(r, 3);
+  }
+  le::AffineMap map;
+  map.leftCols<3>() = linear;
+  map.col(3) = this->Scale * (linear * this->Center + translation - this->Center);
+  return map;
+}
+
+void vtkLaplacianDeformationFilter::vtkInternals::RefreshNormals(
+  vtkPolyData* output, const le::Positions& solution) const
+{
+  // The moved position of a vertex is its ROI row's.
+  const std::vector<le::Vector3>& rest = this->Mesh->GetPositions();
+  auto position = [&](int v) -> le::Vector3 {
+    const int k = this->RowOfVertex[v];
+    return k >= 0 ? le::Vector3(solution.row(k).transpose()) : rest[v];
+  };
+  const le::SurfaceMesh& mesh = *this->Mesh;
+  if (output->GetPointData()->GetNormals())
+  {
+    // Each triangle's (area-weighted) normal once, then their sums around each point.
+    std::vector<le::Vector3> triangleNormals(this->NormalTriangles.size());
+    vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
+      [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType s = begin; s < end; ++s)
+        {
+          const auto& tri = mesh.GetTriangles()[this->NormalTriangles[s]];
+          triangleNormals[s] =
+            (position(tri[1]) - position(tri[0])).cross(position(tri[2]) - position(tri[0]));
+        }
+      });
+    RefreshNormalsArray(output->GetPointData(), this->NormalPoints, [&](vtkIdType r) {
+      const int v = mesh.GetVertexOfPoint()[this->NormalPoints[r]];
+      le::Vector3 n = le::Vector3::Zero();
+      for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
+      {
+        n += triangleNormals[this->TriangleSlot[*t]];
+      }
+      return n;
+    });
+  }
+  RefreshNormalsArray(output->GetCellData(), this->NormalCells, [&](vtkIdType r) {
+    const int* corners = this->CellVertices.data() + this->CellVertexOffsets[r];
+    const int size = this->CellVertexOffsets[r + 1] - this->CellVertexOffsets[r];
+    le::Vector3 n = le::Vector3::Zero();
+    for (int c = 1; c + 1 < size; ++c)
+    {
+      n += (position(corners[c]) - position(corners[0]))
+             .cross(position(corners[c + 1]) - position(corners[0]));
+    }
+    return n;
+  });
 }
 
 void vtkLaplacianDeformationFilter::vtkInternals::FindNormalsToRefresh(vtkPolyData* input)
@@ -465,27 +565,7 @@ int vtkLaplacianDeformationFilter::RequestData(
     {
       return fail("Cannot factor the editing system: " + error + ".");
     }
-    std::vector<int>& rowOfVertex = internals.RowOfVertex;
-    rowOfVertex.assign(internals.Mesh->GetNumberOfVertices(), -1);
-    for (int k = 0; k < internals.Region.GetNumberOfVertices(); ++k)
-    {
-      rowOfVertex[internals.Region.Vertices[k]] = k;
-    }
-    internals.RoiPoints.clear();
-    internals.Roles = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    internals.Roles->SetName("EditRole");
-    internals.Roles->SetNumberOfTuples(numberOfPoints);
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      const int k = rowOfVertex[vertexOfPoint[i]];
-      if (k >= 0)
-      {
-        internals.RoiPoints.emplace_back(i, k);
-      }
-      internals.Roles->SetValue(
-        i, static_cast<unsigned char>(k >= 0 ? internals.Region.Roles[k] : le::VertexRole::Fixed));
-    }
-    internals.FindNormalsToRefresh(input);
+    internals.IndexRegion(input);
     internals.CacheKey = key;
     internals.CacheArrayName = arrayName;
     this->SetupTime = SecondsSince(start);
@@ -528,32 +608,14 @@ int vtkLaplacianDeformationFilter::RequestData(
     return 1; // the output is still the input; the factor stays cached
   }
 
-  // Handle transforms, expressed in the normalized frame: x' = M x + t becomes
-  // x'_n = M x_n + s (M c + t - c).
   const Clock::time_point solveStart = Clock::now();
   std::vector<le::AffineMap> maps(internals.Region.NumberOfHandleGroups, le::AffineMap::Identity());
   for (int g = 0; g < internals.Region.NumberOfHandleGroups; ++g)
   {
-    vtkLinearTransform* transform = this->GetHandleTransform(g);
-    if (!transform)
+    if (vtkLinearTransform* transform = this->GetHandleTransform(g))
     {
-      continue;
+      maps[g] = internals.NormalizedMap(transform);
     }
-    transform->Update();
-    vtkMatrix4x4* m = transform->GetMatrix();
-    Eigen::Matrix3d linear;
-    Eigen::Vector3d translation;
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear(r, c) = m->GetElement(r, c);
-      }
-      translation[r] = m->GetElement(r, 3);
-    }
-    maps[g].leftCols<3>() = linear;
-    maps[g].col(3) =
-      internals.Scale * (linear * internals.Center + translation - internals.Center);
   }
   le::Positions solution;
   internals.Editor.Solve(rotation, maps, solution);
@@ -578,47 +640,7 @@ int vtkLaplacianDeformationFilter::RequestData(
   output->SetPoints(outputPoints);
   this->SolveTime = SecondsSince(solveStart);
 
-  // Normals where the surface moved; the moved position of a vertex is its ROI row's.
-  const std::vector<le::Vector3>& rest = internals.Mesh->GetPositions();
-  auto position = [&](int v) -> le::Vector3 {
-    const int k = internals.RowOfVertex[v];
-    return k >= 0 ? le::Vector3(solution.row(k).transpose()) : rest[v];
-  };
-  const le::SurfaceMesh& mesh = *internals.Mesh;
-  if (output->GetPointData()->GetNormals())
-  {
-    // Each triangle's (area-weighted) normal once, then their sums around each point.
-    std::vector<le::Vector3> triangleNormals(internals.NormalTriangles.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
-      [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType s = begin; s < end; ++s)
-        {
-          const auto& tri = mesh.GetTriangles()[internals.NormalTriangles[s]];
-          triangleNormals[s] =
-            (position(tri[1]) - position(tri[0])).cross(position(tri[2]) - position(tri[0]));
-        }
-      });
-    RefreshNormals(output->GetPointData(), internals.NormalPoints, [&](vtkIdType r) {
-      const int v = mesh.GetVertexOfPoint()[internals.NormalPoints[r]];
-      le::Vector3 n = le::Vector3::Zero();
-      for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
-      {
-        n += triangleNormals[internals.TriangleSlot[*t]];
-      }
-      return n;
-    });
-  }
-  RefreshNormals(output->GetCellData(), internals.NormalCells, [&](vtkIdType r) {
-    const int* corners = internals.CellVertices.data() + internals.CellVertexOffsets[r];
-    const int size = internals.CellVertexOffsets[r + 1] - internals.CellVertexOffsets[r];
-    le::Vector3 n = le::Vector3::Zero();
-    for (int c = 1; c + 1 < size; ++c)
-    {
-      n += (position(corners[c]) - position(corners[0]))
-             .cross(position(corners[c + 1]) - position(corners[0]));
-    }
-    return n;
-  });
+  internals.RefreshNormals(output, solution);
   if (this->GenerateEditRoles)
   {
     output->GetPointData()->AddArray(internals.Roles);
