@@ -4,6 +4,7 @@
 #include "Numerics/LaplacianEditor.h"
 #include "Numerics/SurfaceMesh.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -13,6 +14,7 @@
 #include "vtkInformationVector.h"
 #include "vtkLinearTransform.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -20,6 +22,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
 #include <vtksys/SystemInformation.hxx>
 
@@ -97,6 +100,11 @@ struct vtkLaplacianDeformationFilter::vtkInternals
 
   // What the cached surface graph, and the cached factorization, were built from.
   std::vector<double> MeshKey;
+  // Under MPI, on the first rank: the gathered surface, the pieces' MTimes and point counts.
+  vtkSmartPointer<vtkPolyData> Gathered;
+  std::vector<double> PieceTimes;
+  std::vector<vtkIdType> PieceSizes;
+  int GatheredVersion = 0;
   std::vector<double> CacheKey;
   std::string CacheArrayName;
 
@@ -418,6 +426,125 @@ int vtkLaplacianDeformationFilter::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    return this->EditGathered(controller, input, output);
+  }
+  return this->Edit(input, output, static_cast<double>(input->GetMTime()));
+}
+
+int vtkLaplacianDeformationFilter::EditGathered(
+  vtkMultiProcessController* controller, vtkPolyData* input, vtkPolyData* output)
+{
+  // The edit is global (one sparse system over the region), so the pieces go to the first rank,
+  // which edits the whole surface (coincident piece-boundary points merge) and sends each rank
+  // its own points back, in its own order. Rank 0 caches the gathered surface on the pieces'
+  // MTimes, so a handle move sends no geometry.
+  vtkInternals& internals = *this->Internals;
+  const int rank = controller->GetLocalProcessId();
+  const int ranks = controller->GetNumberOfProcesses();
+  const double localTime = static_cast<double>(input->GetMTime());
+  std::vector<double> times(ranks, 0.0);
+  controller->Gather(&localTime, times.data(), 1, 0);
+  double changed = 0.0;
+  if (rank == 0)
+  {
+    changed = times != internals.PieceTimes || !internals.Gathered ? 1.0 : 0.0;
+  }
+  controller->Broadcast(&changed, 1, 0);
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  if (changed != 0.0)
+  {
+    vtkNew<vtkPolyData> local;
+    local->ShallowCopy(input);
+    controller->Gather(local, pieces, 0);
+  }
+
+  const int pointsTag = 40501;
+  std::vector<double> moved;
+  if (rank == 0)
+  {
+    if (changed != 0.0)
+    {
+      vtkNew<vtkAppendPolyData> append;
+      internals.PieceSizes.assign(ranks, 0);
+      for (int r = 0; r < ranks; ++r)
+      {
+        auto* piece = vtkPolyData::SafeDownCast(pieces[r]);
+        internals.PieceSizes[r] = piece ? piece->GetNumberOfPoints() : 0;
+        if (piece)
+        {
+          append->AddInputData(piece);
+        }
+      }
+      append->Update();
+      internals.Gathered = vtkSmartPointer<vtkPolyData>::New();
+      internals.Gathered->ShallowCopy(append->GetOutput());
+      internals.PieceTimes = times;
+      ++internals.GatheredVersion;
+    }
+    vtkNew<vtkPolyData> edited;
+    this->Edit(internals.Gathered, edited, static_cast<double>(internals.GatheredVersion));
+    // Each rank's slice: coordinates, then the EditRole values.
+    vtkIdType offset = 0;
+    for (int r = 0; r < ranks; ++r)
+    {
+      const vtkIdType count = internals.PieceSizes[r];
+      std::vector<double> slice(4 * count);
+      vtkDataArray* roles = edited->GetPointData()->GetArray("EditRole");
+      for (vtkIdType i = 0; i < count; ++i)
+      {
+        edited->GetPoint(offset + i, slice.data() + 3 * i);
+        slice[3 * count + i] = roles ? roles->GetTuple1(offset + i) : 0.0;
+      }
+      offset += count;
+      if (r == 0)
+      {
+        moved = std::move(slice);
+      }
+      else
+      {
+        controller->Send(slice.data(), 4 * count, r, pointsTag);
+      }
+    }
+  }
+  else
+  {
+    moved.resize(4 * input->GetNumberOfPoints());
+    controller->Receive(moved.data(), 4 * input->GetNumberOfPoints(), 0, pointsTag);
+  }
+
+  // This rank's output: its input with the moved points and the roles. Normals are dropped
+  // rather than left stale (the serial path refreshes them).
+  output->ShallowCopy(input);
+  output->GetPointData()->SetNormals(nullptr);
+  output->GetCellData()->SetNormals(nullptr);
+  const vtkIdType count = input->GetNumberOfPoints();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(count);
+  vtkNew<vtkUnsignedCharArray> roles;
+  roles->SetName("EditRole");
+  roles->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    points->SetPoint(i, moved.data() + 3 * i);
+    roles->SetValue(i, static_cast<unsigned char>(moved[3 * count + i]));
+  }
+  if (count > 0)
+  {
+    output->SetPoints(points);
+  }
+  if (this->GenerateEditRoles)
+  {
+    output->GetPointData()->AddArray(roles);
+  }
+  return 1;
+}
+
+int vtkLaplacianDeformationFilter::Edit(vtkPolyData* input, vtkPolyData* output, double inputVersion)
+{
   vtkInternals& internals = *this->Internals;
   output->ShallowCopy(input);
   this->NumberOfROIVertices = 0;
@@ -463,7 +590,7 @@ int vtkLaplacianDeformationFilter::RequestData(
   vtkDataArray* selection = nullptr;
   if (this->SelectionMode == SELECTION_ARRAY)
   {
-    selection = this->GetInputArrayToProcess(0, inputVector);
+    selection = this->GetInputArrayToProcess(0, input);
     if (!selection)
     {
       return fail("Selection mode is Array but the input has no such point array; name an "
@@ -482,7 +609,7 @@ int vtkLaplacianDeformationFilter::RequestData(
   }
 
   // The surface graph depends on the input alone: a new region reuses it.
-  const std::vector<double> meshKey = { static_cast<double>(input->GetMTime()),
+  const std::vector<double> meshKey = { inputVersion,
     static_cast<double>(this->MergeCoincidentPoints) };
   if (meshKey != internals.MeshKey)
   {
@@ -498,7 +625,7 @@ int vtkLaplacianDeformationFilter::RequestData(
     this->TopologyTime = SecondsSince(start);
   }
 
-  const std::vector<double> key = { static_cast<double>(input->GetMTime()),
+  const std::vector<double> key = { inputVersion,
     static_cast<double>(this->SelectionMode), this->HandleCenter[0], this->HandleCenter[1],
     this->HandleCenter[2], this->HandleRadius, this->ROIRadius, this->AnchorPadding,
     this->HandleWeight, this->AnchorWeight, static_cast<double>(this->LaplacianWeights),
@@ -617,6 +744,18 @@ int vtkLaplacianDeformationFilter::RequestData(
       maps[g] = internals.NormalizedMap(transform);
     }
   }
+  if (!this->GetHandleTransform(0) && !maps.empty())
+  {
+    vtkNew<vtkTransform> properties;
+    properties->PostMultiply();
+    properties->Translate(-this->HandleCenter[0], -this->HandleCenter[1], -this->HandleCenter[2]);
+    properties->RotateX(this->HandleRotation[0]);
+    properties->RotateY(this->HandleRotation[1]);
+    properties->RotateZ(this->HandleRotation[2]);
+    properties->Translate(this->HandleCenter);
+    properties->Translate(this->HandleTranslation);
+    maps[0] = internals.NormalizedMap(properties);
+  }
   le::Positions solution;
   internals.Editor.Solve(rotation, maps, solution);
   if (!solution.allFinite())
@@ -661,6 +800,10 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SelectionMode: " << this->SelectionMode << "\n";
   os << indent << "HandleCenter: (" << this->HandleCenter[0] << ", " << this->HandleCenter[1]
      << ", " << this->HandleCenter[2] << ")\n";
+  os << indent << "HandleTranslation: (" << this->HandleTranslation[0] << ", "
+     << this->HandleTranslation[1] << ", " << this->HandleTranslation[2] << ")\n";
+  os << indent << "HandleRotation: (" << this->HandleRotation[0] << ", " << this->HandleRotation[1]
+     << ", " << this->HandleRotation[2] << ")\n";
   os << indent << "HandleRadius: " << this->HandleRadius << "\n";
   os << indent << "ROIRadius: " << this->ROIRadius << "\n";
   os << indent << "AnchorPadding: " << this->AnchorPadding << "\n";

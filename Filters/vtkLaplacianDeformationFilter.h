@@ -38,6 +38,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkLinearTransform;
+class vtkMultiProcessController;
 
 class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
 {
@@ -254,10 +255,23 @@ public:
   ///@{
   /**
    * The transform of handle group 0, applied to the handle's rest positions. nullptr means
-   * identity. The filter's MTime includes the transforms' MTimes.
+   * HandleTranslation and HandleRotation below. The filter's MTime includes the transforms'
+   * MTimes.
    */
   void SetHandleTransform(vtkLinearTransform* transform) { this->SetHandleTransform(0, transform); }
   vtkLinearTransform* GetHandleTransform() { return this->GetHandleTransform(0); }
+  ///@}
+
+  ///@{
+  /**
+   * Handle group 0's transform as plain properties, for ParaView and scripts: rotation angles
+   * in degrees about x, then y, then z, about HandleCenter, then a translation. Used when no
+   * transform object is set for group 0. Defaults: no motion.
+   */
+  vtkSetVector3Macro(HandleTranslation, double);
+  vtkGetVector3Macro(HandleTranslation, double);
+  vtkSetVector3Macro(HandleRotation, double);
+  vtkGetVector3Macro(HandleRotation, double);
   ///@}
 
   ///@{
@@ -307,8 +321,15 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  // The edit of one whole surface; `inputVersion` stands for the input's MTime in the caches.
+  int Edit(vtkPolyData* input, vtkPolyData* output, double inputVersion);
+  // Under MPI: gather the pieces to the first rank, edit there, send each rank its points.
+  int EditGathered(vtkMultiProcessController* controller, vtkPolyData* input, vtkPolyData* output);
+
   int SelectionMode = SELECTION_GEODESIC;
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
+  double HandleTranslation[3] = { 0.0, 0.0, 0.0 };
+  double HandleRotation[3] = { 0.0, 0.0, 0.0 };
   double HandleRadius = 0.05;
   double ROIRadius = 0.5;
   double AnchorPadding = 0.1;

@@ -574,3 +574,27 @@ TEST(Filter, TriangulatesQuadsInternallyAndKeepsThem)
   filter->GetOutput()->GetPoint(15 * (n + 1) + 15, q);
   EXPECT_NEAR(q[2], 0.2, 1e-3);
 }
+
+TEST(Filter, TranslationAndRotationPropertiesMatchTheTransform)
+{
+  // ParaView's properties: rotation about the handle centre (x, then y, then z), then a
+  // translation. They give the edit the equivalent vtkTransform gives.
+  auto input = BumpyPlane(40);
+  auto byProperties = PlaneEdit(input);
+  byProperties->SetHandleTranslation(0.05, -0.02, 0.2);
+  byProperties->SetHandleRotation(10.0, -20.0, 30.0);
+  byProperties->Update();
+  vtkNew<vtkTransform> transform;
+  transform->PostMultiply();
+  transform->Translate(-0.5, -0.5, 0.0);
+  transform->RotateX(10.0);
+  transform->RotateY(-20.0);
+  transform->RotateZ(30.0);
+  transform->Translate(0.5, 0.5, 0.0);
+  transform->Translate(0.05, -0.02, 0.2);
+  auto byTransform = PlaneEdit(input);
+  byTransform->SetHandleTransform(transform);
+  byTransform->Update();
+  EXPECT_LT(MaxPointDistance(byProperties->GetOutput(), byTransform->GetOutput()), 1e-12);
+  EXPECT_GT(MaxPointDistance(input, byProperties->GetOutput()), 0.1);
+}

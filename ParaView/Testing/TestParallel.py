@@ -1,0 +1,38 @@
+"""pvbatch, serial or under mpiexec: edit a real mesh split into pieces across the ranks and
+write every output point to a file.
+
+    [mpiexec -np 2] pvbatch TestParallel.py PLUGIN POINTS.txt MESH
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paraview import servermanager  # noqa: E402
+from paraview.simple import LoadPlugin  # noqa: E402
+
+LoadPlugin(sys.argv[1], remote=False)
+from paraview.simple import ExtractSurface, OpenDataFile, RedistributeDataSet  # noqa: E402
+import paraview.simple as simple  # noqa: E402
+
+# The mesh is read on the first rank and redistributed: each rank gets a piece, and the pieces
+# repeat their shared boundary points, as ParaView's parallel pipelines do.
+mesh = ExtractSurface(Input=RedistributeDataSet(Input=OpenDataFile(sys.argv[3])))
+bounds = servermanager.Fetch(mesh).GetBounds()
+size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+deform = simple.LaplacianDeformation(Input=mesh)
+deform.HandleCenter = [bounds[1], 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])]
+deform.HandleRadius = 0.05 * size
+deform.ROIRadius = 0.45 * size
+deform.HandleTranslation = [0.1 * size, 0.05 * size, 0.0]
+deform.RotationMode = "Explicit"
+deform.UpdatePipeline()
+# Move the handle once more: the second update must reuse the gathered surface and factor.
+deform.HandleTranslation = [0.15 * size, 0.05 * size, 0.02 * size]
+deform.UpdatePipeline()
+edited = servermanager.Fetch(deform)  # all pieces, appended on the first rank
+ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+with open(sys.argv[2], "w") as points:
+    for i in range(edited.GetNumberOfPoints()):
+        points.write("%.17g %.17g %.17g\n" % edited.GetPoint(i))
+print(f"{edited.GetNumberOfPoints()} points from {ranks} rank(s)", flush=True)
+
