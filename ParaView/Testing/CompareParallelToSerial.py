@@ -1,6 +1,7 @@
-"""Runs TestParallel.py with pvbatch serially and with `mpiexec -np 2`, then checks that both
-give the same edited surface up to point order (the parallel output repeats piece-boundary
-points): every point of each output lies within 1e-9 of a point of the other.
+"""Runs TestParallel.py with pvbatch serially, with `mpiexec -np 2 pvbatch`, and from pvpython
+connected to a two-rank pvserver, then checks that all give the same edited surface up to point
+order (parallel outputs repeat piece-boundary points): every point of each parallel output lies
+within 1e-9 of a serial point, and every serial point within 1e-9 of a parallel one.
 
     python3 CompareParallelToSerial.py PLUGIN WORK_DIR MESH
 """
@@ -8,6 +9,7 @@ import bisect
 import os
 import subprocess
 import sys
+import time
 
 here = os.path.dirname(os.path.abspath(__file__))
 plugin, work, mesh = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -19,10 +21,21 @@ runs = {
     "mpi": ["mpiexec", "-np", "2", "--oversubscribe", "pvbatch", "--force-offscreen-rendering",
             script, plugin],
 }
+port = 11111 + os.getpid() % 1000
+runs["pvserver"] = ["pvpython", script, plugin]
+server = subprocess.Popen(
+    ["mpiexec", "-np", "2", "--oversubscribe", "pvserver", "--force-offscreen-rendering",
+     f"--server-port={port}"], env=environment, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    text=True)
+for line in server.stdout:  # wait until it listens
+    if "Accepting connection" in line:
+        break
 points = {}
 for name, command in runs.items():
     path = os.path.join(work, f"points-{name}.txt")
-    result = subprocess.run(command + [path, mesh], env=environment, capture_output=True, text=True, timeout=300)
+    extra = [str(port)] if name == "pvserver" else []
+    result = subprocess.run(command + [path, mesh] + extra, env=environment, capture_output=True,
+                            text=True, timeout=300)
     print(name, result.stdout.strip().splitlines()[-1:] if result.stdout else "", flush=True)
     if result.returncode != 0:
         print(result.stdout, result.stderr)
@@ -41,9 +54,11 @@ def all_near(a, b, tolerance=1e-9):
     return None
 
 
-serial, mpi = points["serial"], points["mpi"]
-missing = all_near(mpi, serial) or all_near(serial, mpi)
-print(f"serial {len(serial)} points, 2 ranks {len(mpi)} points")
-if missing:
-    sys.exit(f"FAILED: point {missing} has no match in the other run")
-print("parallel matches serial")
+server.wait(timeout=60)  # it exits when the client disconnects
+serial = points["serial"]
+for name in ("mpi", "pvserver"):
+    missing = all_near(points[name], serial) or all_near(serial, points[name])
+    print(f"serial {len(serial)} points, {name} (2 ranks) {len(points[name])} points")
+    if missing:
+        sys.exit(f"FAILED: {name}: point {missing} has no match in the other run")
+print("pvbatch with 2 ranks and pvserver with 2 ranks match serial")

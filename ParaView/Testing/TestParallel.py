@@ -1,15 +1,19 @@
-"""pvbatch, serial or under mpiexec: edit a real mesh split into pieces across the ranks and
-write every output point to a file.
+"""pvbatch, serial or under mpiexec, or pvpython connected to a pvserver: edit a real mesh split
+into pieces across the ranks and write every output point to a file.
 
     [mpiexec -np 2] pvbatch TestParallel.py PLUGIN POINTS.txt MESH
+    pvpython TestParallel.py PLUGIN POINTS.txt MESH SERVER_PORT
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview import servermanager  # noqa: E402
-from paraview.simple import LoadPlugin  # noqa: E402
+from paraview.simple import Connect, LoadPlugin  # noqa: E402
 
+if len(sys.argv) > 4:
+    Connect("localhost", int(sys.argv[4]))
+    LoadPlugin(sys.argv[1], remote=True)  # the server runs the filter
 LoadPlugin(sys.argv[1], remote=False)
 from paraview.simple import ExtractSurface, OpenDataFile, RedistributeDataSet  # noqa: E402
 import paraview.simple as simple  # noqa: E402
@@ -30,7 +34,7 @@ deform.UpdatePipeline()
 deform.HandleTranslation = [0.15 * size, 0.05 * size, 0.02 * size]
 deform.UpdatePipeline()
 edited = servermanager.Fetch(deform)  # all pieces, appended on the first rank
-ranks = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 with open(sys.argv[2], "w") as points:
     for i in range(edited.GetNumberOfPoints()):
         points.write("%.17g %.17g %.17g\n" % edited.GetPoint(i))
