@@ -578,14 +578,6 @@ int vtkLaplacianDeformationFilter::Edit(vtkPolyData* input, vtkPolyData* output,
     return fail("The input has triangle strips; run vtkTriangleFilter first.");
   }
   vtkPoints* inputPoints = input->GetPoints();
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const double* p = inputPoints->GetPoint(i);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      return fail("Point " + std::to_string(i) + " has a NaN or infinite coordinate.");
-    }
-  }
 
   vtkDataArray* selection = nullptr;
   if (this->SelectionMode == SELECTION_ARRAY)
@@ -616,6 +608,15 @@ int vtkLaplacianDeformationFilter::Edit(vtkPolyData* input, vtkPolyData* output,
     const Clock::time_point start = Clock::now();
     internals.Invalidate();
     internals.MeshKey.clear();
+    // Checked once per input, not on every handle move.
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
+    {
+      const double* p = inputPoints->GetPoint(i);
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      {
+        return fail("Point " + std::to_string(i) + " has a NaN or infinite coordinate.");
+      }
+    }
     const std::string error = internals.BuildMesh(input, this->MergeCoincidentPoints != 0);
     if (!error.empty())
     {
