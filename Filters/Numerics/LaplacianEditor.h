@@ -62,7 +62,6 @@ public:
   /// implicit solve.
   double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
-  const DeformationSystem& GetSystem() const { return this->System; }
   /// Bytes of the factors held (as predicted by CHOLMOD's analysis; 0 if unknown).
   double GetFactorBytes() const;
 

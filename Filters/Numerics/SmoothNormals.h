@@ -37,7 +37,6 @@ public:
   Positions Compute(const Positions& roiPositions, const ParallelFor& loop = SerialFor) const;
 
   double GetRadius() const { return this->Radius; }
-  int GetNumberOfSamples() const { return static_cast<int>(this->SampleWeights.rows()); }
 
 private:
   double Radius = 0.0;
