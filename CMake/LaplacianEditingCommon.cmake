@@ -1,5 +1,17 @@
-# Eigen, and CHOLMOD when it is found: shared by the VTK build (../CMakeLists.txt) and the
-# ParaView plugin build (../ParaView/CMakeLists.txt), which compile the same module sources.
+# What the VTK build (../CMakeLists.txt) and the ParaView plugin build
+# (../ParaView/CMakeLists.txt) share, since they compile the same module sources: compiler
+# settings, output folders, Eigen, and CHOLMOD when it is found.
+set(CMAKE_CXX_STANDARD 17)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+if (NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Build type" FORCE)
+endif ()
+
+include(GNUInstallDirs)
+set(CMAKE_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}")
+set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
 
 option(LAPLACIAN_EDITING_USE_CHOLMOD "Use CHOLMOD (SuiteSparse) when it is found" ON)
