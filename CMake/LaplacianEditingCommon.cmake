@@ -27,3 +27,18 @@ if (LAPLACIAN_EDITING_USE_CHOLMOD)
     message(STATUS "CHOLMOD not found: only Eigen's SimplicialLDLT is available")
   endif ()
 endif ()
+
+# VTK's vtk_module_build adds each module's folder as a subdirectory of the top-level project,
+# so the top-level vtk.module cannot be the module folder of a project rooted at the same place.
+# The standalone and ParaView builds therefore scan a staged copy: the same vtk.module, and a
+# CMakeLists.txt that includes the module's code (LaplacianEditingModule.cmake).
+function (laplacian_editing_stage_module module_file_variable)
+  set(stage "${CMAKE_BINARY_DIR}/LaplacianEditingModule")
+  get_filename_component(root "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/.." ABSOLUTE)
+  configure_file("${root}/vtk.module" "${stage}/vtk.module" COPYONLY)
+  file(WRITE "${stage}/CMakeLists.txt.in"
+    "# Generated: the module's code lives in the source tree.\n"
+    "include(\"${root}/CMake/LaplacianEditingModule.cmake\")\n")
+  configure_file("${stage}/CMakeLists.txt.in" "${stage}/CMakeLists.txt" COPYONLY)
+  set("${module_file_variable}" "${stage}/vtk.module" PARENT_SCOPE)
+endfunction ()

@@ -10,10 +10,10 @@
 #ifndef vtkBumpyPlaneSource_h
 #define vtkBumpyPlaneSource_h
 
-#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+#include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkBumpyPlaneSource : public vtkPolyDataAlgorithm
+class VTKLAPLACIANEDITING_EXPORT vtkBumpyPlaneSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkBumpyPlaneSource* New();

@@ -1,20 +1,15 @@
 #include "vtkLaplacianDeformationFilter.h"
 
-#include "Numerics/EditRegion.h"
-#include "Numerics/LaplacianEditor.h"
-#include "Numerics/SurfaceMesh.h"
+#include "LaplacianEditor.h"
+#include "SurfaceMesh.h"
+#include "vtkLaplacianNormalRefresher.h"
+#include "vtkLaplacianSurfaceAdapter.h"
 
-#include "vtkAppendPolyData.h"
-#include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
-#include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkFloatArray.h"
+#include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLinearTransform.h"
-#include "vtkMatrix4x4.h"
-#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -28,16 +23,37 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <functional>
-#include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace le = LaplacianEditing;
 
 vtkStandardNewMacro(vtkLaplacianDeformationFilter);
+
+// The filter's enums are the core's, value for value.
+static_assert(static_cast<int>(le::LaplacianWeights::Uniform) ==
+    vtkLaplacianDeformationFilter::WEIGHTS_UNIFORM &&
+  static_cast<int>(le::LaplacianWeights::Cotangent) ==
+    vtkLaplacianDeformationFilter::WEIGHTS_COTANGENT);
+static_assert(static_cast<int>(le::RotationMode::None) ==
+    vtkLaplacianDeformationFilter::ROTATION_NONE &&
+  static_cast<int>(le::RotationMode::Explicit) == vtkLaplacianDeformationFilter::ROTATION_EXPLICIT &&
+  static_cast<int>(le::RotationMode::Implicit) == vtkLaplacianDeformationFilter::ROTATION_IMPLICIT);
+static_assert(static_cast<int>(le::SolverBackend::Cholmod) ==
+    vtkLaplacianDeformationFilter::SOLVER_CHOLMOD &&
+  static_cast<int>(le::SolverBackend::SimplicialLDLT) ==
+    vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT);
+static_assert(static_cast<int>(le::FillOrdering::Automatic) ==
+    vtkLaplacianDeformationFilter::ORDERING_AUTOMATIC &&
+  static_cast<int>(le::FillOrdering::AMD) == vtkLaplacianDeformationFilter::ORDERING_AMD &&
+  static_cast<int>(le::FillOrdering::METIS) == vtkLaplacianDeformationFilter::ORDERING_METIS &&
+  static_cast<int>(le::FillOrdering::NestedDissection) ==
+    vtkLaplacianDeformationFilter::ORDERING_NESTED_DISSECTION);
+static_assert(static_cast<int>(le::VertexRole::Fixed) == vtkLaplacianDeformationFilter::ROLE_FIXED &&
+  static_cast<int>(le::VertexRole::Anchor) == vtkLaplacianDeformationFilter::ROLE_ANCHOR &&
+  static_cast<int>(le::VertexRole::Free) == vtkLaplacianDeformationFilter::ROLE_FREE &&
+  static_cast<int>(le::VertexRole::Handle) == vtkLaplacianDeformationFilter::ROLE_HANDLE);
 
 namespace
 {
@@ -69,281 +85,44 @@ bool IsIntegerType(int type)
       return false;
   }
 }
-
-// Copies a normals array and recomputes the tuples listed in `ids`: normals near the edit are
-// fresh, and all others stay bit-identical to the input's.
-template <typename NormalOf>
-void RefreshNormalsArray(vtkDataSetAttributes* attributes, const std::vector<vtkIdType>& ids,
-  NormalOf normalOf)
+// The handle properties as a transform: rotations in degrees about x, y, then z, about
+// `center`, then a translation.
+vtkSmartPointer<vtkTransform> PropertyTransform(
+  const double center[3], const double rotation[3], const double translation[3])
 {
-  vtkDataArray* stale = attributes->GetNormals();
-  if (!stale || stale->GetNumberOfComponents() != 3)
-  {
-    return;
-  }
-  vtkSmartPointer<vtkDataArray> fresh = vtk::TakeSmartPointer(stale->NewInstance());
-  fresh->DeepCopy(stale);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const le::Vector3 n = normalOf(r).normalized();
-      fresh->SetTuple3(ids[r], n[0], n[1], n[2]);
-    }
-  });
-  attributes->SetNormals(fresh);
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->PostMultiply();
+  transform->Translate(-center[0], -center[1], -center[2]);
+  transform->RotateX(rotation[0]);
+  transform->RotateY(rotation[1]);
+  transform->RotateZ(rotation[2]);
+  transform->Translate(center);
+  transform->Translate(translation);
+  return transform;
 }
 }
 
 struct vtkLaplacianDeformationFilter::vtkInternals
 {
   std::vector<vtkSmartPointer<vtkLinearTransform>> HandleTransforms;
+  // Committed rest shapes, newest last, for the input of the given MTime.
+  std::vector<vtkSmartPointer<vtkPoints>> Commits;
+  vtkMTimeType CommittedInput = 0;
+  vtkNew<vtkPolyData> CommittedRest;
+  vtkPolyData* LastInput = nullptr;
 
-  // What the cached surface graph, and the cached factorization, were built from.
-  std::vector<double> MeshKey;
-  // Under MPI, on the first rank: the gathered surface, the pieces' MTimes and point counts.
-  vtkSmartPointer<vtkPolyData> Gathered;
-  std::vector<double> PieceTimes;
-  std::vector<vtkIdType> PieceSizes;
-  int GatheredVersion = 0;
-  std::vector<double> CacheKey;
-  std::string CacheArrayName;
-
-  std::shared_ptr<le::SurfaceMesh> Mesh = std::make_shared<le::SurfaceMesh>();
-  le::EditRegion Region;
+  // What the surface graph was built from: the rest surface's MTime and the merge flag.
+  vtkMTimeType SurfaceTime = 0;
+  int SurfaceMerge = -1;
+  vtkLaplacianSurfaceAdapter Surface;
+  double AvailableMemory = 0.0; // megabytes
   le::LaplacianEditor Editor;
-  // Per region: the ROI row of each surface vertex (-1 outside), the input points in the ROI
-  // with their row, and the EditRole array.
-  std::vector<int> RowOfVertex;
-  std::vector<std::pair<vtkIdType, int>> RoiPoints;
-  vtkSmartPointer<vtkUnsignedCharArray> Roles;
-  // Per region: the points and cells whose normals the edit can change, the triangles around
-  // those points (and each mesh triangle's slot among them, -1 if none), and the surface
-  // vertices of each such cell (offsets into CellVertices).
-  std::vector<vtkIdType> NormalPoints;
-  std::vector<int> NormalTriangles;
-  std::vector<int> TriangleSlot;
-  std::vector<vtkIdType> NormalCells;
-  std::vector<int> CellVertexOffsets;
-  std::vector<int> CellVertices;
-
-  std::string BuildMesh(vtkPolyData* input, bool mergeCoincidentPoints);
-  // Per-region lookups from input points to ROI rows, the EditRole array, and the normals the
-  // edit can change.
-  void IndexRegion(vtkPolyData* input);
-  void FindNormalsToRefresh(vtkPolyData* input);
-  // A handle transform in the normalized frame: x' = M x + t becomes x'_n = M x_n + s (M c + t - c).
-  le::AffineMap NormalizedMap(vtkLinearTransform* transform) const;
-  // Point and cell normals of the output, refreshed where the ROI moved to `solution`.
-  void RefreshNormals(vtkPolyData* output, const le::Positions& solution) const;
-  // The core works on coordinates centred on the input's bounding box and scaled to a unit
-  // diagonal, so that offset or tiny models keep their precision.
-  le::Vector3 Center = le::Vector3::Zero();
-  double Scale = 1.0;
-
-  le::Vector3 Normalize(const double p[3]) const
-  {
-    return (le::Vector3(p[0], p[1], p[2]) - this->Center) * this->Scale;
-  }
-  le::Vector3 Denormalize(const le::Vector3& p) const { return p / this->Scale + this->Center; }
-
-  void Invalidate()
-  {
-    this->CacheKey.clear();
-    this->Region = le::EditRegion();
-  }
+  vtkLaplacianNormalRefresher Normals;
+  vtkDataArray* Selection = nullptr;
+  // The current handle maps and result, in the core's frame.
+  std::vector<le::AffineMap> Maps;
+  le::Positions Solution;
 };
-
-std::string vtkLaplacianDeformationFilter::vtkInternals::BuildMesh(
-  vtkPolyData* input, bool mergeCoincidentPoints)
-{
-  double bounds[6];
-  input->GetBounds(bounds);
-  this->Center = le::Vector3(
-    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
-  const double diagonal =
-    le::Vector3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
-  if (!(diagonal > 0.0))
-  {
-    return "All input points coincide: there is no surface to edit.";
-  }
-  this->Scale = 1.0 / diagonal;
-
-  std::vector<le::Vector3> points(input->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    points[i] = this->Normalize(input->GetPoint(i));
-  }
-  std::vector<std::int64_t> offsets(1, 0);
-  std::vector<std::int64_t> connectivity;
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    connectivity.insert(connectivity.end(), ids, ids + size);
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-  }
-  this->Mesh = std::make_shared<le::SurfaceMesh>(
-    le::SurfaceMesh::FromPolygons(points, offsets, connectivity, mergeCoincidentPoints));
-  if (this->Mesh->GetNumberOfTriangles() == 0)
-  {
-    return "The input polygons are all degenerate: no triangle has three distinct corners.";
-  }
-  return {};
-}
-
-void vtkLaplacianDeformationFilter::vtkInternals::IndexRegion(vtkPolyData* input)
-{
-  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
-  const auto& vertexOfPoint = this->Mesh->GetVertexOfPoint();
-  this->RowOfVertex.assign(this->Mesh->GetNumberOfVertices(), -1);
-  for (int k = 0; k < this->Region.GetNumberOfVertices(); ++k)
-  {
-    this->RowOfVertex[this->Region.Vertices[k]] = k;
-  }
-  this->RoiPoints.clear();
-  this->Roles = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  this->Roles->SetName("EditRole");
-  this->Roles->SetNumberOfTuples(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    const int k = this->RowOfVertex[vertexOfPoint[i]];
-    if (k >= 0)
-    {
-      this->RoiPoints.emplace_back(i, k);
-    }
-    this->Roles->SetValue(
-      i, static_cast<unsigned char>(k >= 0 ? this->Region.Roles[k] : le::VertexRole::Fixed));
-  }
-  this->FindNormalsToRefresh(input);
-}
-
-le::AffineMap vtkLaplacianDeformationFilter::vtkInternals::NormalizedMap(
-  vtkLinearTransform* transform) const
-{
-  transform->Update();
-  vtkMatrix4x4* m = transform->GetMatrix();
-  Eigen::Matrix3d linear;
-  Eigen::Vector3d translation;
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      linear(r, c) = m->GetElement(r, c);
-    }
-    translation[r] = m->GetElement(r, 3);
-  }
-  le::AffineMap map;
-  map.leftCols<3>() = linear;
-  map.col(3) = this->Scale * (linear * this->Center + translation - this->Center);
-  return map;
-}
-
-void vtkLaplacianDeformationFilter::vtkInternals::RefreshNormals(
-  vtkPolyData* output, const le::Positions& solution) const
-{
-  // The moved position of a vertex is its ROI row's.
-  const std::vector<le::Vector3>& rest = this->Mesh->GetPositions();
-  auto position = [&](int v) -> le::Vector3 {
-    const int k = this->RowOfVertex[v];
-    return k >= 0 ? le::Vector3(solution.row(k).transpose()) : rest[v];
-  };
-  const le::SurfaceMesh& mesh = *this->Mesh;
-  if (output->GetPointData()->GetNormals())
-  {
-    // Each triangle's (area-weighted) normal once, then their sums around each point.
-    std::vector<le::Vector3> triangleNormals(this->NormalTriangles.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
-      [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType s = begin; s < end; ++s)
-        {
-          const auto& tri = mesh.GetTriangles()[this->NormalTriangles[s]];
-          triangleNormals[s] =
-            (position(tri[1]) - position(tri[0])).cross(position(tri[2]) - position(tri[0]));
-        }
-      });
-    RefreshNormalsArray(output->GetPointData(), this->NormalPoints, [&](vtkIdType r) {
-      const int v = mesh.GetVertexOfPoint()[this->NormalPoints[r]];
-      le::Vector3 n = le::Vector3::Zero();
-      for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
-      {
-        n += triangleNormals[this->TriangleSlot[*t]];
-      }
-      return n;
-    });
-  }
-  RefreshNormalsArray(output->GetCellData(), this->NormalCells, [&](vtkIdType r) {
-    const int* corners = this->CellVertices.data() + this->CellVertexOffsets[r];
-    const int size = this->CellVertexOffsets[r + 1] - this->CellVertexOffsets[r];
-    le::Vector3 n = le::Vector3::Zero();
-    for (int c = 1; c + 1 < size; ++c)
-    {
-      n += (position(corners[c]) - position(corners[0]))
-             .cross(position(corners[c + 1]) - position(corners[0]));
-    }
-    return n;
-  });
-}
-
-void vtkLaplacianDeformationFilter::vtkInternals::FindNormalsToRefresh(vtkPolyData* input)
-{
-  // A vertex normal changes when a vertex of an incident triangle moves: the ROI and its ring.
-  const auto& vertexOfPoint = this->Mesh->GetVertexOfPoint();
-  std::vector<char> near(this->Mesh->GetNumberOfVertices(), 0);
-  for (int v : this->Region.Vertices)
-  {
-    near[v] = 1;
-    for (const int* w = this->Mesh->NeighborsBegin(v); w != this->Mesh->NeighborsEnd(v); ++w)
-    {
-      near[*w] = 1;
-    }
-  }
-  this->NormalPoints.clear();
-  for (vtkIdType i = 0; i < static_cast<vtkIdType>(vertexOfPoint.size()); ++i)
-  {
-    if (near[vertexOfPoint[i]])
-    {
-      this->NormalPoints.push_back(i);
-    }
-  }
-  this->NormalTriangles.clear();
-  this->TriangleSlot.assign(this->Mesh->GetNumberOfTriangles(), -1);
-  for (int v = 0; v < this->Mesh->GetNumberOfVertices(); ++v)
-  {
-    for (const int* t = this->Mesh->TrianglesBegin(v); near[v] && t != this->Mesh->TrianglesEnd(v); ++t)
-    {
-      if (this->TriangleSlot[*t] < 0)
-      {
-        this->TriangleSlot[*t] = static_cast<int>(this->NormalTriangles.size());
-        this->NormalTriangles.push_back(*t);
-      }
-    }
-  }
-  // A polygon normal changes when one of its corners is in the ROI.
-  this->NormalCells.clear();
-  this->CellVertexOffsets.assign(1, 0);
-  this->CellVertices.clear();
-  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    const bool moves = std::any_of(
-      ids, ids + size, [&](vtkIdType id) { return this->RowOfVertex[vertexOfPoint[id]] >= 0; });
-    if (moves)
-    {
-      this->NormalCells.push_back(firstPoly + cells->GetCurrentCellId());
-      for (vtkIdType c = 0; c < size; ++c)
-      {
-        this->CellVertices.push_back(vertexOfPoint[ids[c]]);
-      }
-      this->CellVertexOffsets.push_back(static_cast<int>(this->CellVertices.size()));
-    }
-  }
-}
 
 vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
   : Internals(new vtkInternals)
@@ -424,129 +203,45 @@ vtkMTimeType vtkLaplacianDeformationFilter::GetMTime()
 int vtkLaplacianDeformationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  if (controller && controller->GetNumberOfProcesses() > 1)
-  {
-    return this->EditGathered(controller, input, output);
-  }
-  return this->Edit(input, output, static_cast<double>(input->GetMTime()));
-}
-
-int vtkLaplacianDeformationFilter::EditGathered(
-  vtkMultiProcessController* controller, vtkPolyData* input, vtkPolyData* output)
-{
-  // The edit is global (one sparse system over the region), so the pieces go to the first rank,
-  // which edits the whole surface (coincident piece-boundary points merge) and sends each rank
-  // its own points back, in its own order. Rank 0 caches the gathered surface on the pieces'
-  // MTimes, so a handle move sends no geometry.
-  vtkInternals& internals = *this->Internals;
-  const int rank = controller->GetLocalProcessId();
-  const int ranks = controller->GetNumberOfProcesses();
-  const double localTime = static_cast<double>(input->GetMTime());
-  std::vector<double> times(ranks, 0.0);
-  controller->Gather(&localTime, times.data(), 1, 0);
-  double changed = 0.0;
-  if (rank == 0)
-  {
-    changed = times != internals.PieceTimes || !internals.Gathered ? 1.0 : 0.0;
-  }
-  controller->Broadcast(&changed, 1, 0);
-  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-  if (changed != 0.0)
-  {
-    vtkNew<vtkPolyData> local;
-    local->ShallowCopy(input);
-    controller->Gather(local, pieces, 0);
-  }
-
-  const int pointsTag = 40501;
-  std::vector<double> moved;
-  if (rank == 0)
-  {
-    if (changed != 0.0)
-    {
-      vtkNew<vtkAppendPolyData> append;
-      internals.PieceSizes.assign(ranks, 0);
-      for (int r = 0; r < ranks; ++r)
-      {
-        auto* piece = vtkPolyData::SafeDownCast(pieces[r]);
-        internals.PieceSizes[r] = piece ? piece->GetNumberOfPoints() : 0;
-        if (piece)
-        {
-          append->AddInputData(piece);
-        }
-      }
-      append->Update();
-      internals.Gathered = vtkSmartPointer<vtkPolyData>::New();
-      internals.Gathered->ShallowCopy(append->GetOutput());
-      internals.PieceTimes = times;
-      ++internals.GatheredVersion;
-    }
-    vtkNew<vtkPolyData> edited;
-    this->Edit(internals.Gathered, edited, static_cast<double>(internals.GatheredVersion));
-    // Each rank's slice: coordinates, then the EditRole values.
-    vtkIdType offset = 0;
-    for (int r = 0; r < ranks; ++r)
-    {
-      const vtkIdType count = internals.PieceSizes[r];
-      std::vector<double> slice(4 * count);
-      vtkDataArray* roles = edited->GetPointData()->GetArray("EditRole");
-      for (vtkIdType i = 0; i < count; ++i)
-      {
-        edited->GetPoint(offset + i, slice.data() + 3 * i);
-        slice[3 * count + i] = roles ? roles->GetTuple1(offset + i) : 0.0;
-      }
-      offset += count;
-      if (r == 0)
-      {
-        moved = std::move(slice);
-      }
-      else
-      {
-        controller->Send(slice.data(), 4 * count, r, pointsTag);
-      }
-    }
-  }
-  else
-  {
-    moved.resize(4 * input->GetNumberOfPoints());
-    controller->Receive(moved.data(), 4 * input->GetNumberOfPoints(), 0, pointsTag);
-  }
-
-  // This rank's output: its input with the moved points and the roles. Normals are dropped
-  // rather than left stale (the serial path refreshes them).
-  output->ShallowCopy(input);
-  output->GetPointData()->SetNormals(nullptr);
-  output->GetCellData()->SetNormals(nullptr);
-  const vtkIdType count = input->GetNumberOfPoints();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
-  points->SetNumberOfPoints(count);
-  vtkNew<vtkUnsignedCharArray> roles;
-  roles->SetName("EditRole");
-  roles->SetNumberOfTuples(count);
-  for (vtkIdType i = 0; i < count; ++i)
-  {
-    points->SetPoint(i, moved.data() + 3 * i);
-    roles->SetValue(i, static_cast<unsigned char>(moved[3 * count + i]));
-  }
-  if (count > 0)
-  {
-    output->SetPoints(points);
-  }
-  if (this->GenerateEditRoles)
-  {
-    output->GetPointData()->AddArray(roles);
-  }
+  this->EditSurface(vtkPolyData::GetData(inputVector[0]), vtkPolyData::GetData(outputVector));
   return 1;
 }
 
-int vtkLaplacianDeformationFilter::Edit(vtkPolyData* input, vtkPolyData* output, double inputVersion)
+void vtkLaplacianDeformationFilter::EditSurface(vtkPolyData* input, vtkPolyData* output)
 {
-  vtkInternals& internals = *this->Internals;
+  this->ResetStatistics();
   output->ShallowCopy(input);
+  if (!this->CheckInput(input))
+  {
+    return;
+  }
+  vtkPolyData* rest = this->RestSurface(input);
+  output->ShallowCopy(rest);
+  this->UpdateProgress(0.1);
+  if (!this->UpdateSurfaceGraph(rest) || !this->UpdateRegion(rest) ||
+    !this->UpdateRotationModel() || this->GetAbortExecute())
+  {
+    return;
+  }
+  this->UpdateProgress(0.9);
+  this->MapHandles();
+  if (this->Solve())
+  {
+    this->WriteOutput(rest, output);
+  }
+  this->UpdateProgress(1.0);
+}
+
+bool vtkLaplacianDeformationFilter::Fail(const std::string& message)
+{
+  vtkErrorMacro(<< message);
+  this->SetErrorCode(vtkErrorCode::UserError);
+  return false;
+}
+
+void vtkLaplacianDeformationFilter::ResetStatistics()
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
   this->NumberOfROIVertices = 0;
   this->NumberOfHandleVertices = 0;
   this->TopologyTime = 0.0;
@@ -554,245 +249,279 @@ int vtkLaplacianDeformationFilter::Edit(vtkPolyData* input, vtkPolyData* output,
   this->AnalysisTime = 0.0;
   this->FactorizationTime = 0.0;
   this->SolveTime = 0.0;
+}
 
-  // On bad input: say what is wrong and pass the input through unchanged.
-  auto fail = [&](const std::string& message) {
-    vtkErrorMacro(<< message);
-    internals.Invalidate();
-    output->ShallowCopy(input);
-    return 1;
-  };
-
-  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
-  if (numberOfPoints == 0)
+bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
+{
+  vtkInternals& internals = *this->Internals;
+  internals.Selection = nullptr;
+  if (input->GetNumberOfPoints() == 0)
   {
-    return fail("The input mesh is empty.");
+    return this->Fail("The input mesh is empty.");
   }
   if (input->GetNumberOfPolys() == 0)
   {
-    return fail("The input has no polygons (only vertices, lines or strips): the filter edits "
-                "triangle surfaces.");
+    return this->Fail("The input has no polygons (only vertices, lines or strips): the filter "
+                      "edits triangle surfaces.");
   }
   if (input->GetNumberOfStrips() > 0)
   {
-    return fail("The input has triangle strips; run vtkTriangleFilter first.");
+    return this->Fail("The input has triangle strips; run vtkTriangleFilter first.");
   }
-  vtkPoints* inputPoints = input->GetPoints();
-
-  vtkDataArray* selection = nullptr;
-  if (this->SelectionMode == SELECTION_ARRAY)
+  if (this->SelectionMode == SELECTION_GEODESIC)
   {
-    selection = this->GetInputArrayToProcess(0, input);
-    if (!selection)
-    {
-      return fail("Selection mode is Array but the input has no such point array; name an "
-                  "integer point array with SetInputArrayToProcess.");
-    }
-    if (!IsIntegerType(selection->GetDataType()) || selection->GetNumberOfComponents() != 1)
-    {
-      return fail(std::string("The selection array '") +
-        (selection->GetName() ? selection->GetName() : "") +
-        "' must be an integer array with one component (0 fixed, 1 ROI, 2+ handle).");
-    }
+    return this->HandleRadius > 0.0 && this->ROIRadius > 0.0
+      ? true
+      : this->Fail("HandleRadius and ROIRadius must be positive.");
   }
-  else if (!(this->HandleRadius > 0.0) || !(this->ROIRadius > 0.0))
+  vtkDataArray* selection = this->GetInputArrayToProcess(0, input);
+  if (!selection)
   {
-    return fail("HandleRadius and ROIRadius must be positive.");
+    return this->Fail("Selection mode is Array but the input has no such point array; name an "
+                      "integer point array with SetInputArrayToProcess.");
   }
-
-  // The surface graph depends on the input alone: a new region reuses it.
-  const std::vector<double> meshKey = { inputVersion,
-    static_cast<double>(this->MergeCoincidentPoints) };
-  if (meshKey != internals.MeshKey)
+  if (!IsIntegerType(selection->GetDataType()) || selection->GetNumberOfComponents() != 1)
   {
-    const Clock::time_point start = Clock::now();
-    internals.Invalidate();
-    internals.MeshKey.clear();
-    // Checked once per input, not on every handle move.
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      const double* p = inputPoints->GetPoint(i);
-      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      {
-        return fail("Point " + std::to_string(i) + " has a NaN or infinite coordinate.");
-      }
-    }
-    const std::string error = internals.BuildMesh(input, this->MergeCoincidentPoints != 0);
-    if (!error.empty())
-    {
-      return fail(error);
-    }
-    internals.MeshKey = meshKey;
-    this->TopologyTime = SecondsSince(start);
+    return this->Fail(std::string("The selection array '") +
+      (selection->GetName() ? selection->GetName() : "") +
+      "' must be an integer array with one component (0 fixed, 1 ROI, 2+ handle).");
   }
+  internals.Selection = selection;
+  return true;
+}
 
-  const std::vector<double> key = { inputVersion,
-    static_cast<double>(this->SelectionMode), this->HandleCenter[0], this->HandleCenter[1],
-    this->HandleCenter[2], this->HandleRadius, this->ROIRadius, this->AnchorPadding,
-    this->HandleWeight, this->AnchorWeight, static_cast<double>(this->LaplacianWeights),
-    static_cast<double>(this->OperatorOrder), static_cast<double>(this->Solver),
-    static_cast<double>(this->MergeCoincidentPoints), static_cast<double>(this->Ordering),
-    this->MaximumFactorMemory };
-  const std::string arrayName = selection && selection->GetName() ? selection->GetName() : "";
-
-  if (key != internals.CacheKey || arrayName != internals.CacheArrayName)
+vtkPolyData* vtkLaplacianDeformationFilter::RestSurface(vtkPolyData* input)
+{
+  // The input, or after CommitEdit the input with the committed points.
+  vtkInternals& internals = *this->Internals;
+  if (input != internals.LastInput || input->GetMTime() != internals.CommittedInput)
   {
-    const Clock::time_point start = Clock::now();
-    internals.Invalidate();
-    this->UpdateProgress(0.0);
+    internals.Commits.clear();
+  }
+  internals.LastInput = input;
+  internals.CommittedInput = input->GetMTime();
+  if (internals.Commits.empty())
+  {
+    return input;
+  }
+  if (internals.CommittedRest->GetPoints() != internals.Commits.back())
+  {
+    internals.CommittedRest->ShallowCopy(input);
+    internals.CommittedRest->SetPoints(internals.Commits.back());
+  }
+  return internals.CommittedRest;
+}
 
-    this->UpdateProgress(0.1);
+bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
+{
+  // The surface graph depends on the rest surface alone: a new region reuses it.
+  vtkInternals& internals = *this->Internals;
+  const vtkMTimeType time = std::max(rest->GetMTime(), rest->GetPoints()->GetMTime());
+  if (time == internals.SurfaceTime && this->MergeCoincidentPoints == internals.SurfaceMerge)
+  {
+    return true;
+  }
+  const Clock::time_point start = Clock::now();
+  internals.SurfaceTime = 0;
+  const std::string error = internals.Surface.Build(rest, this->MergeCoincidentPoints != 0);
+  internals.Editor.SetMesh(internals.Surface.GetMesh());
+  if (!error.empty())
+  {
+    return this->Fail(error);
+  }
+  // The automatic factor limit, taken once per surface so that it does not refactor each move.
+  internals.AvailableMemory =
+    0.8 * static_cast<double>(vtksys::SystemInformation().GetAvailablePhysicalMemory());
+  internals.SurfaceTime = time;
+  internals.SurfaceMerge = this->MergeCoincidentPoints;
+  this->TopologyTime = SecondsSince(start);
+  return true;
+}
 
-    std::string error;
-    const auto& vertexOfPoint = internals.Mesh->GetVertexOfPoint();
-    if (selection)
-    {
-      std::vector<int> labels(internals.Mesh->GetNumberOfVertices(), 0);
-      for (vtkIdType i = 0; i < numberOfPoints; ++i)
-      {
-        int& label = labels[vertexOfPoint[i]];
-        label = std::max(label, static_cast<int>(selection->GetComponent(i, 0)));
-      }
-      error = le::SelectLabeledRegion(*internals.Mesh, labels, this->AnchorPadding, internals.Region);
-    }
-    else
-    {
-      const int centerVertex =
-        internals.Mesh->FindNearestVertex(internals.Normalize(this->HandleCenter));
-      error = le::SelectGeodesicRegion(*internals.Mesh, centerVertex,
-        this->HandleRadius * internals.Scale, this->ROIRadius * internals.Scale,
-        this->AnchorPadding, internals.Region);
-    }
-    if (!error.empty())
-    {
-      return fail("Cannot select the region: " + error + ".");
-    }
-    this->UpdateProgress(0.3);
-    if (this->GetAbortExecute())
-    {
-      internals.Invalidate();
-      return 1;
-    }
+bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
+{
+  // The property-to-core mapping of the region and its system, in one place.
+  vtkInternals& internals = *this->Internals;
+  const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
+  le::RegionRequest region;
+  region.AnchorPadding = this->AnchorPadding;
+  vtkDataArray* selection = internals.Selection;
+  if (selection)
+  {
+    region.Selection = le::RegionRequest::Kind::Labeled;
+    region.LabelsVersion = std::max(selection->GetMTime(), rest->GetMTime());
+  }
+  else
+  {
+    region.CenterVertex = surface.GetMesh()->FindNearestVertex(surface.Normalize(this->HandleCenter));
+    region.HandleRadius = this->HandleRadius * surface.GetScale();
+    region.ROIRadius = this->ROIRadius * surface.GetScale();
+  }
+  le::DeformationOptions system;
+  system.Weights = static_cast<le::LaplacianWeights>(this->LaplacianWeights);
+  system.Order = this->OperatorOrder;
+  system.HandleWeight = this->HandleWeight;
+  system.AnchorWeight = this->AnchorWeight;
+  system.Backend = static_cast<le::SolverBackend>(this->Solver);
+  system.Ordering = static_cast<le::FillOrdering>(this->Ordering);
+  system.MaximumFactorBytes = 1048576.0 *
+    (this->MaximumFactorMemory > 0.0 ? this->MaximumFactorMemory : internals.AvailableMemory);
 
-    le::DeformationOptions options;
-    options.Weights = this->LaplacianWeights == WEIGHTS_COTANGENT ? le::LaplacianWeights::Cotangent
-                                                                  : le::LaplacianWeights::Uniform;
-    options.Order = this->OperatorOrder;
-    options.HandleWeight = this->HandleWeight;
-    options.AnchorWeight = this->AnchorWeight;
-    options.Backend = this->Solver == SOLVER_CHOLMOD ? le::SolverBackend::Cholmod
-                                                     : le::SolverBackend::SimplicialLDLT;
-    options.Ordering = static_cast<le::FillOrdering>(this->Ordering);
-    options.MaximumFactorBytes = 1048576.0 *
-      (this->MaximumFactorMemory > 0.0
-          ? this->MaximumFactorMemory
-          : 0.8 * static_cast<double>(vtksys::SystemInformation().GetAvailablePhysicalMemory()));
-    error = internals.Editor.Build(internals.Mesh, internals.Region, options);
-    this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
-    if (!error.empty())
-    {
-      return fail("Cannot factor the editing system: " + error + ".");
-    }
-    internals.IndexRegion(input);
-    internals.CacheKey = key;
-    internals.CacheArrayName = arrayName;
+  const Clock::time_point start = Clock::now();
+  const le::EditStatus status = internals.Editor.UpdateRegion(
+    region, [&] { return surface.VertexLabels(selection); }, system);
+  this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
+  if (!status.Ok())
+  {
+    return this->Fail("Cannot edit: " + status.Error + ".");
+  }
+  if (status.Work != le::RebuiltNothing)
+  {
+    internals.Surface.IndexRegion(internals.Editor.GetRegion());
+    internals.Normals.Index(rest, *surface.GetMesh(), surface.GetRowOfVertex());
     this->SetupTime = SecondsSince(start);
-    this->UpdateProgress(0.7);
   }
+  return true;
+}
 
-  // What the rotation mode needs is built once per region too (the implicit mode factors).
+bool vtkLaplacianDeformationFilter::UpdateRotationModel()
+{
+  vtkInternals& internals = *this->Internals;
   le::RotationOptions rotation;
-  rotation.Mode = this->RotationMode == ROTATION_EXPLICIT ? le::RotationMode::Explicit
-    : this->RotationMode == ROTATION_IMPLICIT             ? le::RotationMode::Implicit
-                                                          : le::RotationMode::None;
+  rotation.Mode = static_cast<le::RotationMode>(this->RotationMode);
   rotation.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
-    ? this->NormalSmoothingRadius * internals.Scale
-    : 0.2 * internals.Region.Radius;
+    ? this->NormalSmoothingRadius * internals.Surface.GetScale()
+    : 0.2 * internals.Editor.GetRegion().Radius;
   rotation.Iterations = this->NumberOfIterations;
   rotation.PreserveDetailScale = this->PreserveDetailScale != 0;
-  {
-    const Clock::time_point start = Clock::now();
-    bool built = false;
-    const std::string error = internals.Editor.Prepare(rotation, built);
-    this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
-    if (!error.empty())
-    {
-      return fail("Cannot factor the implicit rotation system: " + error + ".");
-    }
-    if (built)
-    {
-      this->SetupTime += SecondsSince(start);
-    }
-    this->FactorMemory = internals.Editor.GetFactorBytes() / 1048576.0;
-    if (this->SetupTime > 0.0)
-    {
-      this->AnalysisTime = internals.Editor.GetAnalysisSeconds();
-      this->FactorizationTime = internals.Editor.GetFactorizationSeconds();
-    }
-  }
-  this->UpdateProgress(0.9);
-  if (this->GetAbortExecute())
-  {
-    return 1; // the output is still the input; the factor stays cached
-  }
 
-  const Clock::time_point solveStart = Clock::now();
-  std::vector<le::AffineMap> maps(internals.Region.NumberOfHandleGroups, le::AffineMap::Identity());
-  for (int g = 0; g < internals.Region.NumberOfHandleGroups; ++g)
+  const Clock::time_point start = Clock::now();
+  const le::EditStatus status = internals.Editor.UpdateRotationModel(rotation);
+  this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
+  if (!status.Ok())
+  {
+    return this->Fail("Cannot edit: " + status.Error + ".");
+  }
+  if (status.Work != le::RebuiltNothing)
+  {
+    this->SetupTime += SecondsSince(start);
+  }
+  if (this->SetupTime > 0.0)
+  {
+    this->AnalysisTime = internals.Editor.GetAnalysisSeconds();
+    this->FactorizationTime = internals.Editor.GetFactorizationSeconds();
+  }
+  this->FactorMemory = internals.Editor.GetFactorBytes() / 1048576.0;
+  return true;
+}
+
+void vtkLaplacianDeformationFilter::MapHandles()
+{
+  // Group g follows its transform; group 0 without one follows the handle properties.
+  vtkInternals& internals = *this->Internals;
+  const int groups = internals.Editor.GetRegion().NumberOfHandleGroups;
+  internals.Maps.assign(groups, le::AffineMap::Identity());
+  for (int g = 0; g < groups; ++g)
   {
     if (vtkLinearTransform* transform = this->GetHandleTransform(g))
     {
-      maps[g] = internals.NormalizedMap(transform);
+      internals.Maps[g] = internals.Surface.NormalizedMap(transform);
     }
   }
-  if (!this->GetHandleTransform(0) && !maps.empty())
+  if (!this->GetHandleTransform(0) && groups > 0)
   {
-    vtkNew<vtkTransform> properties;
-    properties->PostMultiply();
-    properties->Translate(-this->HandleCenter[0], -this->HandleCenter[1], -this->HandleCenter[2]);
-    properties->RotateX(this->HandleRotation[0]);
-    properties->RotateY(this->HandleRotation[1]);
-    properties->RotateZ(this->HandleRotation[2]);
-    properties->Translate(this->HandleCenter);
-    properties->Translate(this->HandleTranslation);
-    maps[0] = internals.NormalizedMap(properties);
+    internals.Maps[0] = internals.Surface.NormalizedMap(
+      PropertyTransform(this->HandleCenter, this->HandleRotation, this->HandleTranslation));
   }
-  le::Positions solution;
-  internals.Editor.Solve(rotation, maps, solution);
-  if (!solution.allFinite())
-  {
-    return fail("The solve produced non-finite coordinates; the handle transform may be "
-                "degenerate.");
-  }
+}
 
-  // Write the moved ROI points; every other point keeps its input coordinates exactly.
-  vtkNew<vtkPoints> outputPoints;
-  outputPoints->SetDataType(inputPoints->GetDataType());
-  outputPoints->DeepCopy(inputPoints);
-  const auto& roiPoints = internals.RoiPoints;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(roiPoints.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const le::Vector3 p = internals.Denormalize(solution.row(roiPoints[r].second).transpose());
-      outputPoints->SetPoint(roiPoints[r].first, p.data());
-    }
-  });
-  output->SetPoints(outputPoints);
-  this->SolveTime = SecondsSince(solveStart);
+bool vtkLaplacianDeformationFilter::Solve()
+{
+  vtkInternals& internals = *this->Internals;
+  const Clock::time_point start = Clock::now();
+  const le::EditStatus status = internals.Editor.Solve(internals.Maps, internals.Solution);
+  this->SolveTime = SecondsSince(start);
+  return status.Ok() ? true : this->Fail("Cannot edit: " + status.Error + ".");
+}
 
-  internals.RefreshNormals(output, solution);
+void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
+{
+  vtkInternals& internals = *this->Internals;
+  const Clock::time_point start = Clock::now();
+  const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
+  output->SetPoints(surface.MovePoints(rest->GetPoints(), internals.Solution));
+  internals.Normals.Refresh(
+    output, *surface.GetMesh(), surface.GetRowOfVertex(), internals.Solution);
   if (this->GenerateEditRoles)
   {
-    output->GetPointData()->AddArray(internals.Roles);
+    output->GetPointData()->AddArray(surface.GetRoles());
   }
+  const le::EditRegion& region = internals.Editor.GetRegion();
+  this->NumberOfROIVertices = region.GetNumberOfVertices();
+  this->NumberOfHandleVertices = static_cast<int>(
+    std::count(region.Roles.begin(), region.Roles.end(), le::VertexRole::Handle));
+  this->SolveTime += SecondsSince(start);
+}
 
-  this->NumberOfROIVertices = internals.Region.GetNumberOfVertices();
-  for (auto role : internals.Region.Roles)
+void vtkLaplacianDeformationFilter::CommitEdit()
+{
+  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!input)
   {
-    this->NumberOfHandleVertices += role == le::VertexRole::Handle ? 1 : 0;
+    vtkErrorMacro(<< "CommitEdit needs an input.");
+    return;
   }
-  this->UpdateProgress(1.0);
-  return 1;
+  this->Update();
+  vtkPolyData* output = this->GetOutput();
+  if (this->GetErrorCode() != vtkErrorCode::NoError || !output->GetPoints())
+  {
+    return;
+  }
+  // The handle property transform moves HandleCenter along; the edit starts anew from there.
+  double center[3];
+  PropertyTransform(this->HandleCenter, this->HandleRotation, this->HandleTranslation)
+    ->TransformPoint(this->HandleCenter, center);
+  auto committed = vtkSmartPointer<vtkPoints>::New();
+  committed->DeepCopy(output->GetPoints());
+  this->Internals->Commits.push_back(committed);
+  if (!this->GetHandleTransform(0))
+  {
+    this->SetHandleCenter(center);
+  }
+  this->SetHandleTranslation(0.0, 0.0, 0.0);
+  this->SetHandleRotation(0.0, 0.0, 0.0);
+  this->Modified();
+}
+
+bool vtkLaplacianDeformationFilter::UndoCommit()
+{
+  if (this->Internals->Commits.empty())
+  {
+    return false;
+  }
+  this->Internals->Commits.pop_back();
+  this->Modified();
+  return true;
+}
+
+bool vtkLaplacianDeformationFilter::GetRestPoint(vtkIdType id, double point[3])
+{
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!input || id < 0 || id >= input->GetNumberOfPoints())
+  {
+    return false;
+  }
+  const auto& commits = this->Internals->Commits;
+  vtkPoints* rest = !commits.empty() && commits.back()->GetNumberOfPoints() == input->GetNumberOfPoints()
+    ? commits.back().Get()
+    : input->GetPoints();
+  rest->GetPoint(id, point);
+  return true;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfCommits()
+{
+  return static_cast<int>(this->Internals->Commits.size());
 }
 
 void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)

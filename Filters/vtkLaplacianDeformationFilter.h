@@ -24,6 +24,12 @@
  * one surface vertex (MergeCoincidentPoints, on by default), so texture seams and triangle soups
  * edit as one surface. Points no polygon uses are never edited.
  *
+ * CommitEdit() makes the current result the rest shape of the next edit without touching the
+ * pipeline connection (as CGAL's overwrite_initial_geometry()); UndoCommit() goes back one
+ * commit. A new input forgets the commits.
+ *
+ * Under MPI, use vtkPLaplacianDeformationFilter.
+ *
  * Output: the input with moved points. All point and cell data pass through; point and cell
  * normals are recomputed; the optional EditRole point array classifies each point as 0 fixed,
  * 1 anchor, 2 free or 3 handle (the paper's Fig. 2). On bad input the filter reports an error
@@ -32,15 +38,16 @@
 #ifndef vtkLaplacianDeformationFilter_h
 #define vtkLaplacianDeformationFilter_h
 
-#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+#include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 class vtkLinearTransform;
-class vtkMultiProcessController;
+class vtkPoints;
 
-class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
+class VTKLAPLACIANEDITING_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLaplacianDeformationFilter* New();
@@ -215,9 +222,9 @@ public:
 
   ///@{
   /**
-   * CHOLMOD's fill-reducing ordering: automatic (default; CHOLMOD tries AMD and falls back to
-   * METIS when AMD fills poorly), AMD, METIS or CHOLMOD's nested dissection. SimplicialLDLT
-   * always uses AMD.
+   * CHOLMOD's fill-reducing ordering: automatic (default: AMD below 300,000 unknowns, METIS
+   * from there, as measured in the README), AMD, METIS or CHOLMOD's nested dissection.
+   * SimplicialLDLT always uses AMD.
    */
   vtkSetClampMacro(Ordering, int, ORDERING_AUTOMATIC, ORDERING_NESTED_DISSECTION);
   vtkGetMacro(Ordering, int);
@@ -284,6 +291,25 @@ public:
   void RemoveAllHandleTransforms();
   ///@}
 
+  ///@{
+  /**
+   * Make the current result the rest shape of the next edit, keeping the input connection:
+   * the filter updates, keeps the output's points, sets HandleTranslation and HandleRotation to
+   * zero and moves HandleCenter with the handle. Handle transform objects are the caller's to
+   * reset (vtkDeformationHandleWidget does). UndoCommit() restores the rest shape before the
+   * last commit and returns false if there is none. A new input forgets all commits.
+   */
+  void CommitEdit();
+  bool UndoCommit();
+  int GetNumberOfCommits();
+  ///@}
+
+  /**
+   * The rest position of input point `id`: after CommitEdit its committed position, else the
+   * input's. Returns false for an id the input does not have.
+   */
+  bool GetRestPoint(vtkIdType id, double point[3]);
+
   /**
    * Numeric factorizations since construction.
    */
@@ -321,10 +347,12 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  // The edit of one whole surface; `inputVersion` stands for the input's MTime in the caches.
-  int Edit(vtkPolyData* input, vtkPolyData* output, double inputVersion);
-  // Under MPI: gather the pieces to the first rank, edit there, send each rank its points.
-  int EditGathered(vtkMultiProcessController* controller, vtkPolyData* input, vtkPolyData* output);
+  /**
+   * The edit of one whole surface, in stages. Caches are keyed on the input's MTime and the
+   * selection array's, and on the properties through the core's requests. On bad input: an
+   * error, and the output is the input.
+   */
+  void EditSurface(vtkPolyData* input, vtkPolyData* output);
 
   int SelectionMode = SELECTION_GEODESIC;
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
@@ -358,6 +386,19 @@ protected:
   double FactorMemory = 0.0;
 
 private:
+  // The stages of EditSurface; each returns false, with an error reported, when the edit
+  // cannot go on.
+  bool CheckInput(vtkPolyData* input);
+  bool UpdateSurfaceGraph(vtkPolyData* rest);
+  bool UpdateRegion(vtkPolyData* rest);
+  bool UpdateRotationModel();
+  void MapHandles();
+  bool Solve();
+  void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
+  bool Fail(const std::string& message);
+  void ResetStatistics();
+  vtkPolyData* RestSurface(vtkPolyData* input);
+
   vtkLaplacianDeformationFilter(const vtkLaplacianDeformationFilter&) = delete;
   void operator=(const vtkLaplacianDeformationFilter&) = delete;
 

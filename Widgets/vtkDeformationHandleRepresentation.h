@@ -18,7 +18,7 @@
 #ifndef vtkDeformationHandleRepresentation_h
 #define vtkDeformationHandleRepresentation_h
 
-#include "vtkLaplacianEditingWidgetsModule.h" // for export macro
+#include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkNew.h"                           // for vtkNew
 #include "vtkWidgetRepresentation.h"
 
@@ -31,7 +31,7 @@ class vtkSphereSource;
 class vtkTransform;
 class vtkTubeFilter;
 
-class VTKLAPLACIANEDITINGWIDGETS_EXPORT vtkDeformationHandleRepresentation
+class VTKLAPLACIANEDITING_EXPORT vtkDeformationHandleRepresentation
   : public vtkWidgetRepresentation
 {
 public:

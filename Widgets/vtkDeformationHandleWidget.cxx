@@ -25,8 +25,6 @@ vtkCxxSetObjectMacro(vtkDeformationHandleWidget, SurfaceProp, vtkProp);
 struct vtkDeformationHandleWidget::vtkInternals
 {
   vtkNew<vtkCellPicker> SurfacePicker;
-  // The rest surfaces before each commit.
-  std::vector<vtkSmartPointer<vtkPolyData>> Commits;
 };
 
 vtkDeformationHandleWidget::vtkDeformationHandleWidget()
@@ -115,15 +113,12 @@ bool vtkDeformationHandleWidget::PickSurface(int x, int y, double point[3])
   {
     return false;
   }
-  // The picked vertex at rest: the filter's input, whose point ids the output keeps.
-  vtkDataSet* rest = this->DeformationFilter
-    ? vtkDataSet::SafeDownCast(this->DeformationFilter->GetInputDataObject(0, 0))
-    : picker->GetDataSet();
-  if (!rest || picker->GetPointId() >= rest->GetNumberOfPoints())
+  // The picked vertex at rest (the output keeps the input's point ids).
+  if (this->DeformationFilter)
   {
-    return false;
+    return this->DeformationFilter->GetRestPoint(picker->GetPointId(), point);
   }
-  rest->GetPoint(picker->GetPointId(), point);
+  picker->GetDataSet()->GetPoint(picker->GetPointId(), point);
   return true;
 }
 
@@ -144,30 +139,23 @@ void vtkDeformationHandleWidget::ResetHandle()
 
 void vtkDeformationHandleWidget::CommitEdit()
 {
-  vtkLaplacianDeformationFilter* filter = this->DeformationFilter;
-  vtkPolyData* rest = filter ? vtkPolyData::SafeDownCast(filter->GetInputDataObject(0, 0)) : nullptr;
-  if (!rest)
+  // The filter keeps the commits; its input connection stays as it is.
+  if (!this->DeformationFilter)
   {
     return;
   }
-  filter->Update();
-  auto edited = vtkSmartPointer<vtkPolyData>::New();
-  edited->DeepCopy(filter->GetOutput());
-  this->Internals->Commits.emplace_back(rest);
-  filter->SetInputData(edited);
   double center[3];
   this->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  this->DeformationFilter->CommitEdit();
   this->PlaceHandle(center);
 }
 
 bool vtkDeformationHandleWidget::UndoCommit()
 {
-  if (this->Internals->Commits.empty() || !this->DeformationFilter)
+  if (!this->DeformationFilter || !this->DeformationFilter->UndoCommit())
   {
     return false;
   }
-  this->DeformationFilter->SetInputData(this->Internals->Commits.back());
-  this->Internals->Commits.pop_back();
   this->ResetHandle();
   return true;
 }
@@ -254,5 +242,4 @@ void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DeformationFilter: " << this->DeformationFilter << "\n";
   os << indent << "SurfaceProp: " << this->SurfaceProp << "\n";
-  os << indent << "Commits: " << this->Internals->Commits.size() << "\n";
 }

@@ -25,7 +25,7 @@
 #define vtkDeformationHandleWidget_h
 
 #include "vtkAbstractWidget.h"
-#include "vtkLaplacianEditingWidgetsModule.h" // for export macro
+#include "vtkLaplacianEditingModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
@@ -33,7 +33,7 @@ class vtkDeformationHandleRepresentation;
 class vtkLaplacianDeformationFilter;
 class vtkProp;
 
-class VTKLAPLACIANEDITINGWIDGETS_EXPORT vtkDeformationHandleWidget : public vtkAbstractWidget
+class VTKLAPLACIANEDITING_EXPORT vtkDeformationHandleWidget : public vtkAbstractWidget
 {
 public:
   static vtkDeformationHandleWidget* New();
@@ -69,14 +69,11 @@ public:
   void ResetHandle();
 
   /**
-   * Make the edited surface the rest surface of the next edit (the filter's input becomes a
-   * copy of its output), keeping the handle where it is.
+   * Forward to the filter's CommitEdit() and UndoCommit(), and put the handle at rest where it
+   * is (after a commit) or reset it (after an undo). UndoCommit returns false if there is no
+   * commit to undo.
    */
   void CommitEdit();
-
-  /**
-   * Go back to the rest surface before the last commit. Returns false if there is none.
-   */
   bool UndoCommit();
 
 protected:

@@ -16,6 +16,7 @@
 #include "EditRegion.h"
 #include "LaplacianOperator.h"
 #include "SparseCholesky.h"
+#include "Types.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -25,9 +26,6 @@
 
 namespace LaplacianEditing
 {
-using AffineMap = Eigen::Matrix<double, 3, 4>;
-using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;
-
 struct DeformationOptions
 {
   LaplacianWeights Weights = LaplacianWeights::Uniform;
@@ -39,8 +37,18 @@ struct DeformationOptions
   double AnchorWeight = 1.0;
   SolverBackend Backend = SolverBackend::Cholmod;
   FillOrdering Ordering = FillOrdering::Automatic;
-  /// Largest factor to attempt, in bytes (0: no limit; CHOLMOD only).
+  /// Largest factor to attempt, in bytes (0: no limit; CHOLMOD only). A new limit is tried
+  /// anew, so it takes part in equality.
   double MaximumFactorBytes = 0.0;
+
+  bool operator==(const DeformationOptions& other) const
+  {
+    return this->Weights == other.Weights && this->Order == other.Order &&
+      this->HandleWeight == other.HandleWeight && this->AnchorWeight == other.AnchorWeight &&
+      this->Backend == other.Backend && this->Ordering == other.Ordering &&
+      this->MaximumFactorBytes == other.MaximumFactorBytes;
+  }
+  bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };
 
 class DeformationSystem

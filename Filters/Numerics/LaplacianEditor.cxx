@@ -4,8 +4,39 @@
 
 namespace LaplacianEditing
 {
+bool RegionRequest::operator==(const RegionRequest& other) const
+{
+  if (this->Selection != other.Selection || this->AnchorPadding != other.AnchorPadding)
+  {
+    return false;
+  }
+  if (this->Selection == Kind::Labeled)
+  {
+    return this->LabelsVersion == other.LabelsVersion;
+  }
+  return this->CenterVertex == other.CenterVertex && this->HandleRadius == other.HandleRadius &&
+    this->ROIRadius == other.ROIRadius;
+}
+
+void LaplacianEditor::SetMesh(std::shared_ptr<const SurfaceMesh> mesh)
+{
+  this->Mesh = std::move(mesh);
+  this->Ready = false;
+  this->HasRegionRequest = false;
+  this->HasSystemOptions = false;
+  this->Region = EditRegion();
+  this->Normals.reset();
+  this->Frames.reset();
+  this->Implicit.reset();
+  this->LastFailure.reset();
+}
+
 double LaplacianEditor::GetFactorBytes() const
 {
+  if (!this->Ready)
+  {
+    return 0.0;
+  }
   return this->System.GetFactor().GetFactorBytes() +
     (this->Implicit ? this->Implicit->GetFactor().GetFactorBytes() : 0.0);
 }
@@ -17,24 +48,110 @@ void LaplacianEditor::Record(const SparseCholesky& factor)
   this->FactorizationSeconds = factor.GetFactorizationSeconds();
 }
 
-std::string LaplacianEditor::Build(std::shared_ptr<const SurfaceMesh> mesh,
-  const EditRegion& region, const DeformationOptions& options)
+std::string LaplacianEditor::SelectRegion(
+  const RegionRequest& request, const std::function<std::vector<int>()>& labels)
 {
-  this->Mesh = std::move(mesh);
-  this->Region = region;
-  this->Options = options;
-  this->Normals.reset();
-  this->Frames.reset();
-  this->Implicit.reset();
-  std::string error = this->System.Build(*this->Mesh, this->Region, options);
-  if (error.empty())
+  if (request.Selection == RegionRequest::Kind::Labeled)
   {
-    this->Record(this->System.GetFactor());
+    return SelectLabeledRegion(*this->Mesh, labels(), request.AnchorPadding, this->Region);
   }
-  return error;
+  return SelectGeodesicRegion(*this->Mesh, request.CenterVertex, request.HandleRadius,
+    request.ROIRadius, request.AnchorPadding, this->Region);
 }
 
-std::string LaplacianEditor::Prepare(const RotationOptions& rotation, bool& built)
+EditStatus LaplacianEditor::Fail(bool rotationModel, RotationMode mode, std::string error)
+{
+  // What failed stays unbuilt; what was built before it stays valid.
+  this->Ready = false;
+  this->LastFailure.reset(new Failure{ this->RegionRequested, this->SystemRequested,
+    rotationModel, mode, error });
+  EditStatus status;
+  status.Error = std::move(error);
+  return status;
+}
+
+EditStatus LaplacianEditor::UpdateRegion(const RegionRequest& region,
+  const std::function<std::vector<int>()>& labels, const DeformationOptions& system)
+{
+  EditStatus status;
+  this->Ready = false;
+  this->RegionRequested = region;
+  this->SystemRequested = system;
+  if (!this->Mesh)
+  {
+    status.Error = "no surface to edit";
+    return status;
+  }
+  const Failure* failed = this->LastFailure.get();
+  if (failed && !failed->RotationModel && failed->Region == region && failed->System == system)
+  {
+    status.Error = failed->Error;
+    return status;
+  }
+  if (!this->HasRegionRequest || this->RegionBuiltFrom != region)
+  {
+    this->HasRegionRequest = false;
+    this->HasSystemOptions = false;
+    const std::string error = this->SelectRegion(region, labels);
+    if (!error.empty())
+    {
+      return this->Fail(false, RotationMode::None, "cannot select the region: " + error);
+    }
+    this->RegionBuiltFrom = region;
+    this->HasRegionRequest = true;
+    status.Work |= RebuiltRegion;
+  }
+  if (!this->HasSystemOptions || this->SystemBuiltFrom != system)
+  {
+    this->HasSystemOptions = false;
+    this->Normals.reset();
+    this->Frames.reset();
+    this->Implicit.reset();
+    const std::string error = this->System.Build(*this->Mesh, this->Region, system);
+    if (!error.empty())
+    {
+      return this->Fail(false, RotationMode::None, "cannot factor the editing system: " + error);
+    }
+    this->Record(this->System.GetFactor());
+    this->SystemBuiltFrom = system;
+    this->HasSystemOptions = true;
+    status.Work |= RebuiltSystem;
+  }
+  if (status.Work != RebuiltNothing)
+  {
+    this->LastFailure.reset();
+  }
+  return status;
+}
+
+EditStatus LaplacianEditor::UpdateRotationModel(const RotationOptions& rotation)
+{
+  EditStatus status;
+  this->Ready = false;
+  if (!this->HasSystemOptions)
+  {
+    status.Error = "the editor has no region: UpdateRegion first";
+    return status;
+  }
+  const Failure* failed = this->LastFailure.get();
+  if (failed && failed->RotationModel && failed->Mode == rotation.Mode)
+  {
+    status.Error = failed->Error;
+    return status;
+  }
+  bool built = false;
+  const std::string error = this->BuildRotationModel(rotation, built);
+  if (!error.empty())
+  {
+    return this->Fail(true, rotation.Mode, "cannot factor the implicit rotation system: " + error);
+  }
+  status.Work = built ? RebuiltRotationModel : RebuiltNothing;
+  this->Rotation = rotation;
+  this->Ready = true;
+  return status;
+}
+
+std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation, bool& built)
 {
   built = false;
   if (rotation.Mode == RotationMode::Explicit &&
@@ -52,7 +169,7 @@ std::string LaplacianEditor::Prepare(const RotationOptions& rotation, bool& buil
   {
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
     const std::string error =
-      implicit->Build(*this->Mesh, this->Region, this->System, this->Options);
+      implicit->Build(*this->Mesh, this->Region, this->System, this->SystemBuiltFrom);
     if (!error.empty())
     {
       return error;
@@ -64,15 +181,16 @@ std::string LaplacianEditor::Prepare(const RotationOptions& rotation, bool& buil
   return {};
 }
 
-std::string LaplacianEditor::Solve(
-  const RotationOptions& rotation, const std::vector<AffineMap>& handleMaps, Positions& roiPositions)
+EditStatus LaplacianEditor::Solve(
+  const std::vector<AffineMap>& handleMaps, Positions& roiPositions) const
 {
-  bool built;
-  const std::string error = this->Prepare(rotation, built);
-  if (!error.empty())
+  EditStatus status;
+  if (!this->Ready)
   {
-    return error;
+    status.Error = "the editor has no region: Update first";
+    return status;
   }
+  const RotationOptions& rotation = this->Rotation;
   if (rotation.Mode == RotationMode::Implicit)
   {
     roiPositions = this->Implicit->Solve(handleMaps);
@@ -81,18 +199,24 @@ std::string LaplacianEditor::Solve(
       roiPositions = this->System.SolveWithDifferentialCoordinates(
         this->Implicit->RotatedDifferentialCoordinates(roiPositions), handleMaps);
     }
-    return {};
   }
-  roiPositions = this->System.Solve(handleMaps);
-  if (rotation.Mode == RotationMode::Explicit)
+  else
   {
-    for (int pass = 0; pass < std::max(rotation.Iterations, 1); ++pass)
+    roiPositions = this->System.Solve(handleMaps);
+    for (int pass = 0; rotation.Mode == RotationMode::Explicit &&
+         pass < std::max(rotation.Iterations, 1);
+         ++pass)
     {
       const Positions rotated = this->Frames->Rotate(
         roiPositions, this->Normals->Compute(roiPositions, this->Loop), this->Loop);
       roiPositions = this->System.SolveWithDifferentialCoordinates(rotated, handleMaps);
     }
   }
-  return {};
+  if (!roiPositions.allFinite())
+  {
+    status.Error = "the solve produced non-finite coordinates; the handle transform may be "
+                   "degenerate";
+  }
+  return status;
 }
 }

@@ -1,6 +1,7 @@
-// One region being edited: the pre-factored Laplacian system and, built on first use, what each
-// way of keeping details oriented needs. Everything here depends only on the rest mesh and the
-// region; a handle move calls Solve, which never refactors.
+// One surface being edited: the editor owns the region, its pre-factored Laplacian system and,
+// built on first use, what the rotation mode needs. It alone decides what to recompute: each
+// Update compares typed requests with what it holds and rebuilds exactly what changed, and it
+// says what it rebuilt. A handle move is a Solve, which never refactors.
 //
 //  - None: reconstruct from the rest differential coordinates (Section 3).
 //  - Explicit: take that reconstruction as the reference, estimate smooth normals on it
@@ -16,12 +17,36 @@
 #include "DeformationSystem.h"
 #include "ImplicitSimilaritySystem.h"
 #include "LocalFrames.h"
+#include "ParallelFor.h"
 #include "SmoothNormals.h"
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace LaplacianEditing
 {
+/// How the handle and the ROI are chosen. Two requests are equal when they select the same
+/// region: only the fields of their kind count.
+struct RegionRequest
+{
+  enum class Kind
+  {
+    Geodesic, // discs around CenterVertex
+    Labeled   // per-vertex labels (0 fixed, 1 ROI, 2 + g handle group g)
+  };
+  Kind Selection = Kind::Geodesic;
+  int CenterVertex = -1;
+  double HandleRadius = 0.0;
+  double ROIRadius = 0.0;
+  double AnchorPadding = 0.1;
+  /// Labeled: changes whenever the labels may have changed.
+  std::uint64_t LabelsVersion = 0;
+
+  bool operator==(const RegionRequest& other) const;
+  bool operator!=(const RegionRequest& other) const { return !(*this == other); }
+};
+
 enum class RotationMode
 {
   None,
@@ -40,26 +65,53 @@ struct RotationOptions
   bool PreserveDetailScale = false;
 };
 
+/// What an Update rebuilt (bit flags).
+enum Rebuilt : unsigned
+{
+  RebuiltNothing = 0,
+  RebuiltRegion = 1,
+  RebuiltSystem = 2,
+  RebuiltRotationModel = 4
+};
+
+/// The outcome of an Update or a Solve. Ignoring it does not compile.
+struct [[nodiscard]] EditStatus
+{
+  /// Empty on success.
+  std::string Error;
+  /// Rebuilt flags.
+  unsigned Work = RebuiltNothing;
+
+  bool Ok() const { return this->Error.empty(); }
+};
+
 class LaplacianEditor
 {
 public:
-  /// Assembles and factors the Laplacian system of a region; forgets any rotation data.
-  std::string Build(std::shared_ptr<const SurfaceMesh> mesh, const EditRegion& region,
-    const DeformationOptions& options);
+  /// The surface to edit; forgets everything built for the previous one.
+  void SetMesh(std::shared_ptr<const SurfaceMesh> mesh);
 
-  /// Builds (and, in implicit mode, factors) what the rotation mode needs, unless it is there
-  /// already; `built` tells whether there was work. Returns an error message, empty on success.
-  std::string Prepare(const RotationOptions& rotation, bool& built);
+  /// Brings the region and its factored system up to date with the requests. `labels` gives
+  /// the per-vertex labels of a labeled selection; it is called only when the region must be
+  /// reselected. A request that failed is remembered: the same request again fails at once,
+  /// without refactoring.
+  EditStatus UpdateRegion(const RegionRequest& region,
+    const std::function<std::vector<int>()>& labels, const DeformationOptions& system);
 
-  /// The ROI positions for the handle maps (rows follow the region's vertices). Prepares the
-  /// rotation mode first if needed. Returns an error message, empty on success.
-  std::string Solve(const RotationOptions& rotation, const std::vector<AffineMap>& handleMaps,
-    Positions& roiPositions);
+  /// Builds what the rotation mode needs for the current region, unless it is there already
+  /// (the implicit mode factors its coupled system). A failure is remembered as above.
+  EditStatus UpdateRotationModel(const RotationOptions& rotation);
+
+  /// The ROI positions for the handle maps (rows follow GetRegion().Vertices). Needs a
+  /// successful Update with the same rotation options.
+  EditStatus Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions) const;
+
+  const EditRegion& GetRegion() const { return this->Region; }
+  bool HasRegion() const { return this->Ready; }
 
   /// Numeric factorizations since construction.
   int GetNumberOfFactorizations() const { return this->NumberOfFactorizations; }
-  /// Seconds of symbolic analysis and numeric factorization in the last Build or first
-  /// implicit solve.
+  /// Seconds of symbolic analysis and numeric factorization of the last factorization.
   double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
   /// Bytes of the factors held (as predicted by CHOLMOD's analysis; 0 if unknown).
@@ -69,17 +121,39 @@ public:
   void SetParallelFor(ParallelFor loop) { this->Loop = std::move(loop); }
 
 private:
+  std::string SelectRegion(const RegionRequest& request,
+    const std::function<std::vector<int>()>& labels);
+  std::string BuildRotationModel(const RotationOptions& rotation, bool& built);
+  EditStatus Fail(bool rotationModel, RotationMode mode, std::string error);
   void Record(const SparseCholesky& factor);
 
   std::shared_ptr<const SurfaceMesh> Mesh;
+  // What is built, and from which requests.
+  bool Ready = false;
+  bool HasRegionRequest = false;
+  RegionRequest RegionBuiltFrom;
+  bool HasSystemOptions = false;
+  DeformationOptions SystemBuiltFrom;
+  RegionRequest RegionRequested;
+  DeformationOptions SystemRequested;
+  RotationOptions Rotation;
   EditRegion Region;
-  DeformationOptions Options;
   DeformationSystem System;
   // Explicit mode, keyed on the smoothing radius.
   std::unique_ptr<SmoothNormals> Normals;
   std::unique_ptr<LocalFrames> Frames;
   // Implicit mode.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
+  // The last request that failed, and why; Mode is set when the rotation model failed.
+  struct Failure
+  {
+    RegionRequest Region;
+    DeformationOptions System;
+    bool RotationModel = false;
+    RotationMode Mode = RotationMode::None;
+    std::string Error;
+  };
+  std::unique_ptr<Failure> LastFailure;
   ParallelFor Loop = SerialFor;
   int NumberOfFactorizations = 0;
   double AnalysisSeconds = 0.0;

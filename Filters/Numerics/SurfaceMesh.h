@@ -6,8 +6,7 @@
 #ifndef LaplacianEditing_SurfaceMesh_h
 #define LaplacianEditing_SurfaceMesh_h
 
-#include <Eigen/Core>
-#include <Eigen/Geometry> // cross products
+#include "Types.h"
 
 #include <array>
 #include <cstdint>
@@ -15,8 +14,6 @@
 
 namespace LaplacianEditing
 {
-using Vector3 = Eigen::Vector3d;
-
 class SurfaceMesh
 {
 public:

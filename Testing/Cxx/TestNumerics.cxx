@@ -1,4 +1,6 @@
 // Unit tests of the VTK-free numerical core: operators, regions, the editing system, solvers.
+#include "NumericsTestMeshes.h"
+
 #include "DeformationSystem.h"
 #include "EditRegion.h"
 #include "GeodesicDistance.h"
@@ -13,47 +15,13 @@
 #include <functional>
 
 using namespace LaplacianEditing;
+using namespace LaplacianEditing::Testing;
 
 namespace
 {
-// A triangulated grid over [0, width] x [0, 1] with `nx` x `ny` quads, lifted by `height`.
-SurfaceMesh MakeGrid(int nx, int ny, double width = 1.0,
-  const std::function<double(double, double)>& height = nullptr, double xOffset = 0.0)
-{
-  std::vector<Vector3> points;
-  for (int j = 0; j <= ny; ++j)
-  {
-    for (int i = 0; i <= nx; ++i)
-    {
-      const double x = width * i / nx;
-      const double y = static_cast<double>(j) / ny;
-      points.emplace_back(x + xOffset, y, height ? height(x, y) : 0.0);
-    }
-  }
-  std::vector<std::int64_t> offsets(1, 0);
-  std::vector<std::int64_t> connectivity;
-  for (int j = 0; j < ny; ++j)
-  {
-    for (int i = 0; i < nx; ++i)
-    {
-      const std::int64_t a = j * (nx + 1) + i;
-      connectivity.insert(connectivity.end(), { a, a + 1, a + nx + 2, a + nx + 1 });
-      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    }
-  }
-  return SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
-}
-
 double Bumps(double x, double y)
 {
   return 0.03 * std::sin(12 * x) * std::sin(12 * y);
-}
-
-AffineMap Translation(const Vector3& t)
-{
-  AffineMap map = AffineMap::Identity();
-  map.col(3) = t;
-  return map;
 }
 
 struct Edit

@@ -1,0 +1,41 @@
+# The LaplacianEditing module: its sources are Filters/ (the deformation filter and the adapters
+# over the numerical core) and Widgets/ (the handle widget). VTK builds it as a Remote module
+# through the top-level CMakeLists.txt; the standalone and ParaView builds through the staged
+# module directory of laplacian_editing_stage_module (LaplacianEditingCommon.cmake).
+get_filename_component(_le_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+
+# The numerical core first: the module links it privately.
+add_subdirectory("${_le_root}/Filters/Numerics" "${CMAKE_CURRENT_BINARY_DIR}/Numerics")
+
+set(classes
+  Filters/vtkBumpyPlaneSource
+  Filters/vtkLaplacianDeformationFilter
+  Filters/vtkPLaplacianDeformationFilter
+  Widgets/vtkDeformationHandleRepresentation
+  Widgets/vtkDeformationHandleWidget)
+list(TRANSFORM classes PREPEND "${_le_root}/")
+# Adapters between vtkPolyData and the core, not part of the module's API.
+set(private_classes
+  Filters/vtkLaplacianSurfaceAdapter
+  Filters/vtkLaplacianNormalRefresher)
+list(TRANSFORM private_classes PREPEND "${_le_root}/")
+set(private_sources ${private_classes})
+set(private_headers ${private_classes})
+list(TRANSFORM private_sources APPEND ".cxx")
+list(TRANSFORM private_headers APPEND ".h")
+
+# In the ParaView plugin the module is linked into the plugin library itself.
+set(force_static)
+if (LAPLACIAN_EDITING_PARAVIEW_PLUGIN)
+  set(force_static FORCE_STATIC)
+endif ()
+vtk_module_add_module(LaplacianEditing::LaplacianEditing ${force_static}
+  CLASSES ${classes}
+  SOURCES ${private_sources}
+  PRIVATE_HEADERS ${private_headers})
+vtk_module_include(LaplacianEditing::LaplacianEditing
+  PUBLIC "$<BUILD_INTERFACE:${_le_root}/Filters>" "$<BUILD_INTERFACE:${_le_root}/Widgets>")
+vtk_module_link(LaplacianEditing::LaplacianEditing PRIVATE LaplacianEditing::Numerics)
+if (COMMAND paraview_add_server_manager_xmls)
+  paraview_add_server_manager_xmls(XMLS "${_le_root}/ParaView/Plugin/LaplacianDeformation.xml")
+endif ()

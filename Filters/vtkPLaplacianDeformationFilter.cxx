@@ -1,0 +1,153 @@
+#include "vtkPLaplacianDeformationFilter.h"
+
+#include "vtkAppendPolyData.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+vtkStandardNewMacro(vtkPLaplacianDeformationFilter);
+vtkCxxSetObjectMacro(vtkPLaplacianDeformationFilter, Controller, vtkMultiProcessController);
+
+namespace
+{
+const int PointsTag = 40501;
+}
+
+vtkPLaplacianDeformationFilter::vtkPLaplacianDeformationFilter()
+{
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+vtkPLaplacianDeformationFilter::~vtkPLaplacianDeformationFilter()
+{
+  this->SetController(nullptr);
+}
+
+int vtkPLaplacianDeformationFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Controller || this->Controller->GetNumberOfProcesses() < 2)
+  {
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkNew<vtkPolyData> edited;
+  if (this->GatherPieces(input))
+  {
+    this->EditSurface(this->Gathered, edited);
+  }
+  this->ScatterPoints(input, edited, output);
+  return 1;
+}
+
+bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input)
+{
+  // Geometry travels only when some piece changed.
+  vtkMultiProcessController* controller = this->Controller;
+  const int ranks = controller->GetNumberOfProcesses();
+  const bool first = controller->GetLocalProcessId() == 0;
+  const double localTime = static_cast<double>(input->GetMTime());
+  std::vector<double> times(ranks, 0.0);
+  controller->Gather(&localTime, times.data(), 1, 0);
+  double changed = first && (times != this->PieceTimes || !this->Gathered) ? 1.0 : 0.0;
+  controller->Broadcast(&changed, 1, 0);
+  if (changed != 0.0)
+  {
+    vtkNew<vtkPolyData> local;
+    local->ShallowCopy(input);
+    std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+    controller->Gather(local, pieces, 0);
+    if (first)
+    {
+      vtkNew<vtkAppendPolyData> append;
+      this->PieceSizes.assign(ranks, 0);
+      for (int r = 0; r < ranks; ++r)
+      {
+        if (auto* piece = vtkPolyData::SafeDownCast(pieces[r]))
+        {
+          this->PieceSizes[r] = piece->GetNumberOfPoints();
+          append->AddInputData(piece);
+        }
+      }
+      append->Update();
+      this->Gathered = vtkSmartPointer<vtkPolyData>::New();
+      this->Gathered->ShallowCopy(append->GetOutput());
+      this->PieceTimes = times;
+    }
+  }
+  return first;
+}
+
+void vtkPLaplacianDeformationFilter::ScatterPoints(
+  vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output)
+{
+  // Each rank's slice: coordinates, then the EditRole values.
+  vtkMultiProcessController* controller = this->Controller;
+  const vtkIdType count = input->GetNumberOfPoints();
+  std::vector<double> moved(4 * count);
+  if (controller->GetLocalProcessId() == 0)
+  {
+    vtkDataArray* roles = edited->GetPointData()->GetArray("EditRole");
+    vtkIdType offset = 0;
+    for (int r = 0; r < controller->GetNumberOfProcesses(); ++r)
+    {
+      const vtkIdType size = this->PieceSizes[r];
+      std::vector<double> slice(4 * size);
+      for (vtkIdType i = 0; i < size && edited->GetPoints(); ++i)
+      {
+        edited->GetPoint(offset + i, slice.data() + 3 * i);
+        slice[3 * size + i] = roles ? roles->GetTuple1(offset + i) : 0.0;
+      }
+      offset += size;
+      if (r == 0)
+      {
+        moved = std::move(slice);
+      }
+      else
+      {
+        controller->Send(slice.data(), 4 * size, r, PointsTag);
+      }
+    }
+  }
+  else
+  {
+    controller->Receive(moved.data(), 4 * count, 0, PointsTag);
+  }
+
+  output->ShallowCopy(input);
+  output->GetPointData()->SetNormals(nullptr);
+  output->GetCellData()->SetNormals(nullptr);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(count);
+  vtkNew<vtkUnsignedCharArray> roles;
+  roles->SetName("EditRole");
+  roles->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    points->SetPoint(i, moved.data() + 3 * i);
+    roles->SetValue(i, static_cast<unsigned char>(moved[3 * count + i]));
+  }
+  if (count > 0)
+  {
+    output->SetPoints(points);
+  }
+  if (this->GenerateEditRoles)
+  {
+    output->GetPointData()->AddArray(roles);
+  }
+}
+
+void vtkPLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
+}

@@ -1,0 +1,60 @@
+/**
+ * @class   vtkPLaplacianDeformationFilter
+ * @brief   vtkLaplacianDeformationFilter on a surface distributed over MPI ranks
+ *
+ * The edit is global (one sparse system over the region), so the pieces go to the first rank,
+ * which edits the whole surface (coincident piece-boundary points merge into one vertex) and
+ * sends each rank its own points back, in its own order. The first rank caches the gathered
+ * surface on the pieces' MTimes, so a handle move sends no geometry. Point and cell normals are
+ * dropped rather than left stale. With one process, or no controller, it is the serial filter.
+ *
+ * @sa vtkLaplacianDeformationFilter vtkMultiProcessController
+ */
+#ifndef vtkPLaplacianDeformationFilter_h
+#define vtkPLaplacianDeformationFilter_h
+
+#include "vtkLaplacianDeformationFilter.h"
+#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkSmartPointer.h"           // for vtkSmartPointer
+
+#include <vector> // for std::vector
+
+class vtkMultiProcessController;
+
+class VTKLAPLACIANEDITING_EXPORT vtkPLaplacianDeformationFilter
+  : public vtkLaplacianDeformationFilter
+{
+public:
+  static vtkPLaplacianDeformationFilter* New();
+  vtkTypeMacro(vtkPLaplacianDeformationFilter, vtkLaplacianDeformationFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The controller of the ranks. Default: the global controller.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+protected:
+  vtkPLaplacianDeformationFilter();
+  ~vtkPLaplacianDeformationFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkMultiProcessController* Controller = nullptr;
+
+private:
+  vtkPLaplacianDeformationFilter(const vtkPLaplacianDeformationFilter&) = delete;
+  void operator=(const vtkPLaplacianDeformationFilter&) = delete;
+
+  // Rank 0: the gathered surface, each piece's MTime and point count.
+  bool GatherPieces(vtkPolyData* input);
+  void ScatterPoints(vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output);
+  vtkSmartPointer<vtkPolyData> Gathered;
+  std::vector<double> PieceTimes;
+  std::vector<vtkIdType> PieceSizes;
+};
+
+#endif
