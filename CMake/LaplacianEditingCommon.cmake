@@ -1,6 +1,6 @@
 # What the VTK build (../CMakeLists.txt) and the ParaView plugin build
 # (../ParaView/CMakeLists.txt) share, since they compile the same module sources: compiler
-# settings, output folders, Eigen, and CHOLMOD when it is found.
+# settings, output folders, the core's dependencies, and the staged module folder.
 set(CMAKE_CXX_STANDARD 17)
 set(CMAKE_CXX_STANDARD_REQUIRED ON)
 if (NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
@@ -12,21 +12,7 @@ set(CMAKE_RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_BINDIR}"
 set(CMAKE_LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
 
-find_package(Eigen3 3.3 REQUIRED NO_MODULE)
-
-option(LAPLACIAN_EDITING_USE_CHOLMOD "Use CHOLMOD (SuiteSparse) when it is found" ON)
-if (LAPLACIAN_EDITING_USE_CHOLMOD)
-  find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
-  find_library(CHOLMOD_LIBRARY cholmod)
-  find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig)
-  if (CHOLMOD_INCLUDE_DIR AND CHOLMOD_LIBRARY AND SUITESPARSECONFIG_LIBRARY)
-    set(LAPLACIAN_EDITING_CHOLMOD_INCLUDE_DIRS "${CHOLMOD_INCLUDE_DIR}")
-    set(LAPLACIAN_EDITING_CHOLMOD_LIBRARIES "${CHOLMOD_LIBRARY}" "${SUITESPARSECONFIG_LIBRARY}")
-    message(STATUS "CHOLMOD: ${CHOLMOD_LIBRARY}")
-  else ()
-    message(STATUS "CHOLMOD not found: only Eigen's SimplicialLDLT is available")
-  endif ()
-endif ()
+include("${CMAKE_CURRENT_LIST_DIR}/LaplacianEditingDependencies.cmake")
 
 # VTK's vtk_module_build adds each module's folder as a subdirectory of the top-level project,
 # so the top-level vtk.module cannot be the module folder of a project rooted at the same place.

@@ -5,6 +5,7 @@
 get_filename_component(_le_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 
 # The numerical core first: the module links it privately.
+include("${_le_root}/CMake/LaplacianEditingDependencies.cmake")
 add_subdirectory("${_le_root}/Filters/Numerics" "${CMAKE_CURRENT_BINARY_DIR}/Numerics")
 
 set(classes
