@@ -50,6 +50,10 @@ static_assert(static_cast<int>(le::FillOrdering::Automatic) ==
   static_cast<int>(le::FillOrdering::METIS) == vtkLaplacianDeformationFilter::ORDERING_METIS &&
   static_cast<int>(le::FillOrdering::NestedDissection) ==
     vtkLaplacianDeformationFilter::ORDERING_NESTED_DISSECTION);
+static_assert(static_cast<int>(le::DistanceMethod::FastMarching) ==
+    vtkLaplacianDeformationFilter::DISTANCE_FAST_MARCHING &&
+  static_cast<int>(le::DistanceMethod::EdgePaths) ==
+    vtkLaplacianDeformationFilter::DISTANCE_EDGE_PATHS);
 static_assert(static_cast<int>(le::VertexRole::Fixed) == vtkLaplacianDeformationFilter::ROLE_FIXED &&
   static_cast<int>(le::VertexRole::Anchor) == vtkLaplacianDeformationFilter::ROLE_ANCHOR &&
   static_cast<int>(le::VertexRole::Free) == vtkLaplacianDeformationFilter::ROLE_FREE &&
@@ -345,6 +349,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
   le::RegionRequest region;
   region.AnchorPadding = this->AnchorPadding;
+  region.Distances = static_cast<le::DistanceMethod>(this->DistanceMethod);
   vtkDataArray* selection = internals.Selection;
   if (selection)
   {
@@ -394,6 +399,9 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
     : 0.2 * internals.Editor.GetRegion().Radius;
   rotation.Iterations = this->NumberOfIterations;
   rotation.PreserveDetailScale = this->PreserveDetailScale != 0;
+  const bool paper = this->ImplicitFormulation == IMPLICIT_PAPER;
+  rotation.Formulation.PerEdge = !paper;
+  rotation.Formulation.AllowScaling = paper;
 
   const Clock::time_point start = Clock::now();
   const le::EditStatus status = internals.Editor.UpdateRotationModel(rotation);
@@ -537,6 +545,8 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HandleRadius: " << this->HandleRadius << "\n";
   os << indent << "ROIRadius: " << this->ROIRadius << "\n";
   os << indent << "AnchorPadding: " << this->AnchorPadding << "\n";
+  os << indent << "DistanceMethod: "
+     << (this->DistanceMethod == DISTANCE_EDGE_PATHS ? "EdgePaths" : "FastMarching") << "\n";
   os << indent << "HandleWeight: " << this->HandleWeight << "\n";
   os << indent << "AnchorWeight: " << this->AnchorWeight << "\n";
   os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
@@ -545,6 +555,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "PreserveDetailScale: " << this->PreserveDetailScale << "\n";
+  os << indent << "ImplicitFormulation: " << this->ImplicitFormulation << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "Ordering: " << this->Ordering << "\n";
   os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << "\n";

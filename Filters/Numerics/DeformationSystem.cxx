@@ -22,6 +22,14 @@ std::string DeformationSystem::Build(
   {
     const int v = region.Vertices[k];
     this->RestPositions.row(k) = positions[v].transpose();
+    // The bi-Laplacian takes two rings of known values on each side: the fixed part and the
+    // handle. Its rows at handle vertices would instead ask a turned handle to keep the rest
+    // orientation of its second-order coordinates, which reaches two rings into the free part
+    // and inflates it.
+    if (options.Order >= 2 && region.Roles[k] == VertexRole::Handle)
+    {
+      continue;
+    }
     for (const auto& [j, coefficient] : laplacian.Row(v, options.Order))
     {
       this->RestDelta.row(k) += coefficient * positions[j].transpose();
@@ -37,6 +45,10 @@ std::string DeformationSystem::Build(
   }
   this->RegionOperator.resize(n, n);
   this->RegionOperator.setFromTriplets(triplets.begin(), triplets.end());
+  if (options.Order >= 2)
+  {
+    this->BuildFirstOrder(mesh, region, laplacian, local);
+  }
 
   this->SquaredWeights.setZero(n);
   this->HandleGroups = region.HandleGroups;
@@ -86,6 +98,47 @@ std::string DeformationSystem::Build(
     this->GroupResponses[g] = solution.middleCols<4>(3 + 4 * g);
   }
   return {};
+}
+
+void DeformationSystem::BuildFirstOrder(const SurfaceMesh& mesh, const EditRegion& region,
+  const LaplacianOperator& laplacian, const std::vector<int>& local)
+{
+  const int n = region.GetNumberOfVertices();
+  const auto& positions = mesh.GetPositions();
+  auto delta = [&](int v) {
+    Vector3 d = Vector3::Zero();
+    for (const auto& [j, coefficient] : laplacian.Row(v, 1))
+    {
+      d += coefficient * positions[j];
+    }
+    return d;
+  };
+  std::vector<Eigen::Triplet<double>> triplets;
+  this->FirstOrderDelta.resize(n, 3);
+  this->FirstOrderOutside.setZero(n, 3);
+  for (int k = 0; k < n; ++k)
+  {
+    const int v = region.Vertices[k];
+    this->FirstOrderDelta.row(k) = delta(v).transpose();
+    for (const auto& [j, coefficient] : laplacian.Row(v, 1))
+    {
+      if (local[j] >= 0)
+      {
+        triplets.emplace_back(k, local[j], coefficient);
+      }
+      else
+      {
+        this->FirstOrderOutside.row(k) += coefficient * delta(j).transpose();
+      }
+    }
+  }
+  this->FirstOrderRegion.resize(n, n);
+  this->FirstOrderRegion.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+Positions DeformationSystem::ComposeSecondOrder(const Positions& firstOrder) const
+{
+  return this->FirstOrderRegion * firstOrder + this->FirstOrderOutside;
 }
 
 Eigen::MatrixXd DeformationSystem::HandleBasis(int group) const

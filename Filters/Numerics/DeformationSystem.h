@@ -77,6 +77,14 @@ public:
   /// handle vertex and the rest position of an anchor; zero for free vertices.
   Positions ConstraintRightHandSide(const std::vector<AffineMap>& handleMaps) const;
 
+  /// Second order: the first-order coordinates of the ROI, and L applied to first-order
+  /// coordinates given for the ROI (those outside it stay at rest), which gives second-order
+  /// ones. Rotating each first-order coordinate in its own frame and composing keeps the
+  /// second-order right-hand side consistent, where rotating L^2 coordinates one by one does
+  /// not, and L^-2 amplifies the inconsistency into a blow-up.
+  const Positions& GetFirstOrderDifferentialCoordinates() const { return this->FirstOrderDelta; }
+  Positions ComposeSecondOrder(const Positions& firstOrder) const;
+
   const Positions& GetRestPositions() const { return this->RestPositions; }
   const Positions& GetRestDifferentialCoordinates() const { return this->RestDelta; }
   /// Differential rows restricted to the ROI columns (the unknowns).
@@ -95,10 +103,17 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
+  void BuildFirstOrder(const SurfaceMesh& mesh, const EditRegion& region,
+    const LaplacianOperator& laplacian, const std::vector<int>& local);
+
   Eigen::SparseMatrix<double, Eigen::RowMajor> RegionOperator;
   SparseCholesky Factor;
   Positions RestPositions;
   Positions RestDelta;
+  // Second order: first-order coordinates, L over the ROI, and L's terms from outside it.
+  Positions FirstOrderDelta;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> FirstOrderRegion;
+  Positions FirstOrderOutside;
   Positions FixedPart;
   Eigen::VectorXd SquaredWeights;
   std::vector<int> HandleGroups;

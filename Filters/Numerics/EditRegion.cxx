@@ -10,6 +10,60 @@ namespace LaplacianEditing
 {
 namespace
 {
+// Where each ROI vertex lies between the handles (0) and the fixed part (1): h / (h + b), with h
+// its distance from the handles (`fromHandles`, per ROI row) and b its distance to the nearest
+// fixed vertex through the ROI. The anchor padding thus lines the border with the untouched mesh
+// (Section 6) whatever the ROI's shape, and anchor weights still rise with the distance from the
+// handle. A part of the ROI with no fixed border is measured by h alone, against the largest h.
+void AssignRelativeDistances(const SurfaceMesh& mesh, const std::vector<double>& fromHandles,
+  DistanceMethod method, EditRegion& region)
+{
+  const int n = region.GetNumberOfVertices();
+  std::vector<int> local(mesh.GetNumberOfVertices(), -1);
+  for (int k = 0; k < n; ++k)
+  {
+    local[region.Vertices[k]] = k;
+  }
+  std::vector<int> border;
+  std::vector<char> onBorder(mesh.GetNumberOfVertices(), 0);
+  for (int v : region.Vertices)
+  {
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+    {
+      if (local[*w] < 0 && !onBorder[*w])
+      {
+        onBorder[*w] = 1;
+        border.push_back(*w);
+      }
+    }
+  }
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> toFixed(n, infinity);
+  GeodesicSearch(mesh, method).Visit(
+    border, infinity,
+    [&](int v, double d) {
+      if (local[v] >= 0)
+      {
+        toFixed[local[v]] = d;
+      }
+    },
+    [&](int v) { return local[v] >= 0; });
+  double largest = 0.0;
+  for (double h : fromHandles)
+  {
+    largest = std::isfinite(h) ? std::max(largest, h) : largest;
+  }
+  region.RelativeDistances.resize(n);
+  for (int k = 0; k < n; ++k)
+  {
+    // A vertex the handles cannot reach counts as farthest, so it becomes an anchor.
+    const double h = std::isfinite(fromHandles[k]) ? fromHandles[k] : largest;
+    const double b = toFixed[k];
+    region.RelativeDistances[k] = std::isfinite(b) ? (h + b > 0.0 ? h / (h + b) : 0.0)
+                                                   : (largest > 0.0 ? h / largest : 0.0);
+  }
+}
+
 // Assigns anchor and free roles from the relative distances, then checks that the edit is well
 // posed: every connected part of the ROI must touch a fixed vertex, hold an anchor, or hold two
 // handle groups. A part held by one handle group alone would only follow it rigidly (and with a
@@ -87,7 +141,7 @@ std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& re
 }
 
 std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, double handleRadius,
-  double roiRadius, double anchorPadding, EditRegion& region)
+  double roiRadius, double anchorPadding, EditRegion& region, DistanceMethod method)
 {
   region = EditRegion();
   if (centerVertex < 0 || centerVertex >= mesh.GetNumberOfVertices())
@@ -103,39 +157,35 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
     return "the handle reaches outside the region of interest: HandleRadius must be smaller "
            "than ROIRadius";
   }
-  const std::vector<double> distance = ComputeGeodesicDistances(mesh, { centerVertex }, roiRadius);
-  // When the ROI swallows the whole component, the anchor band is measured from the distance
-  // it actually reaches, so that the far end is still held.
-  double reach = 0.0;
+  const std::vector<double> distance = ComputeGeodesicDistances(mesh, { centerVertex }, roiRadius, method);
+  // The region is a geodesic disc: from a vertex at h, the fixed border lies R - h further out,
+  // so the relative distance h / (h + b) is h / R and needs no second search. When the disc
+  // swallows the whole component, R is the distance it actually reaches.
   bool touchesFixed = false;
-  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
-  {
-    if (std::isfinite(distance[v]))
-    {
-      reach = std::max(reach, distance[v]);
-      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
-      {
-        touchesFixed = touchesFixed || !std::isfinite(distance[*w]);
-      }
-    }
-  }
-  const double radius = touchesFixed || reach <= 0.0 ? roiRadius : reach;
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
     if (std::isfinite(distance[v]))
     {
       region.Vertices.push_back(v);
       region.HandleGroups.push_back(distance[v] <= handleRadius ? 0 : -1);
-      region.RelativeDistances.push_back(distance[v] / radius);
+      region.Radius = std::max(region.Radius, distance[v]);
+      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+      {
+        touchesFixed = touchesFixed || !std::isfinite(distance[*w]);
+      }
     }
   }
+  const double radius = touchesFixed || region.Radius <= 0.0 ? roiRadius : region.Radius;
+  for (int v : region.Vertices)
+  {
+    region.RelativeDistances.push_back(distance[v] / radius);
+  }
   region.NumberOfHandleGroups = 1;
-  region.Radius = radius;
   return Finish(mesh, anchorPadding, region);
 }
 
 std::string SelectLabeledRegion(const SurfaceMesh& mesh, const std::vector<int>& labels,
-  double anchorPadding, EditRegion& region)
+  double anchorPadding, EditRegion& region, DistanceMethod method)
 {
   region = EditRegion();
   std::vector<int> handles;
@@ -166,23 +216,21 @@ std::string SelectLabeledRegion(const SurfaceMesh& mesh, const std::vector<int>&
   {
     return "the selection array marks no handle vertex (value 2 or more)";
   }
-  // A ROI vertex the handles cannot reach counts as farthest, so it becomes an anchor.
-  const std::vector<double> distance =
-    ComputeGeodesicDistances(mesh, handles, std::numeric_limits<double>::infinity());
-  double largest = 0.0;
-  for (int v : region.Vertices)
+  // Distances from the handles through the ROI.
+  std::vector<int> local(mesh.GetNumberOfVertices(), -1);
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
   {
-    if (std::isfinite(distance[v]))
-    {
-      largest = std::max(largest, distance[v]);
-    }
+    local[region.Vertices[k]] = k;
   }
-  region.Radius = largest;
-  for (int v : region.Vertices)
-  {
-    const double d = std::isfinite(distance[v]) ? distance[v] : largest;
-    region.RelativeDistances.push_back(largest > 0.0 ? d / largest : 0.0);
-  }
+  std::vector<double> fromHandles(region.GetNumberOfVertices(), std::numeric_limits<double>::infinity());
+  GeodesicSearch(mesh, method).Visit(
+    handles, std::numeric_limits<double>::infinity(),
+    [&](int v, double d) {
+      fromHandles[local[v]] = d;
+      region.Radius = std::max(region.Radius, d);
+    },
+    [&](int v) { return local[v] >= 0; });
+  AssignRelativeDistances(mesh, fromHandles, method, region);
   return Finish(mesh, anchorPadding, region);
 }
 }

@@ -4,6 +4,7 @@
 #ifndef LaplacianEditing_EditRegion_h
 #define LaplacianEditing_EditRegion_h
 
+#include "GeodesicDistance.h"
 #include "SurfaceMesh.h"
 
 #include <string>
@@ -28,30 +29,30 @@ struct EditRegion
   std::vector<VertexRole> Roles;
   /// Per ROI vertex: the handle group of a handle vertex, -1 otherwise.
   std::vector<int> HandleGroups;
-  /// Per ROI vertex: geodesic distance from the handle divided by the ROI radius, in [0, 1].
-  /// Anchors are weighted in proportion to it (Section 6).
+  /// Per ROI vertex: where it lies between the handles (0) and the fixed part (1),
+  /// h / (h + b) with h its distance from the handles and b its distance to the nearest fixed
+  /// vertex (h over the largest h where the ROI has no fixed border). Anchors are the outer
+  /// padding of it, weighted in proportion to it (Section 6).
   std::vector<double> RelativeDistances;
   int NumberOfHandleGroups = 0;
-  /// The distance that RelativeDistances are relative to: the ROI radius, or in a labelled
-  /// selection the largest distance of an ROI vertex from the handles.
+  /// The largest distance of an ROI vertex from the handles.
   double Radius = 0.0;
 
   int GetNumberOfVertices() const { return static_cast<int>(this->Vertices.size()); }
 };
 
-/// Handle: vertices within `handleRadius` (edge-path distance) of `centerVertex`.
-/// ROI: vertices within `roiRadius` of it. Anchors: ROI vertices farther than
-/// (1 - anchorPadding) * roiRadius, or, when the ROI covers the whole component, farther than
-/// (1 - anchorPadding) times the largest distance reached. Returns an error message, empty on
-/// success.
+/// Handle: vertices within `handleRadius` of `centerVertex`. ROI: vertices within `roiRadius`
+/// of it. Anchors: ROI vertices whose relative distance exceeds 1 - anchorPadding, a band along
+/// the border with the fixed part. Returns an error message, empty on success.
 std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, double handleRadius,
-  double roiRadius, double anchorPadding, EditRegion& region);
+  double roiRadius, double anchorPadding, EditRegion& region,
+  DistanceMethod method = DistanceMethod::FastMarching);
 
 /// Per surface vertex labels: 0 fixed, 1 ROI, 2 + g handle group g (the .sel convention).
-/// Anchors: ROI vertices in the outer `anchorPadding` fraction of the largest distance from the
-/// handles. Returns an error message, empty on success.
+/// Anchors as above: the padding lines the border with the fixed part, wherever the handles
+/// are. Returns an error message, empty on success.
 std::string SelectLabeledRegion(const SurfaceMesh& mesh, const std::vector<int>& labels,
-  double anchorPadding, EditRegion& region);
+  double anchorPadding, EditRegion& region, DistanceMethod method = DistanceMethod::FastMarching);
 }
 
 #endif

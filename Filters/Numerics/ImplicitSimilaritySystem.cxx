@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 
+#include <cmath>
+
 namespace LaplacianEditing
 {
 namespace
@@ -42,8 +44,10 @@ Eigen::Matrix<double, 3, 4> ApplyToDelta(const Eigen::Vector3d& delta)
 }
 
 std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
-  const DeformationSystem& plain, const DeformationOptions& options)
+  const DeformationSystem& plain, const DeformationOptions& options,
+  const ImplicitFormulation& formulation)
 {
+  const LaplacianOperator edgeWeights(mesh, options.Weights);
   const int n = region.GetNumberOfVertices();
   this->NumberOfVertices = n;
   this->RestDelta = plain.GetRestDifferentialCoordinates();
@@ -72,11 +76,47 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     this->RingRest.row(k) = positions[ringVertices[k]].transpose();
   }
   this->Fits.resize(n);
+  this->FitOffsets.resize(n);
 
+  // The residual rows: per vertex (the paper's, Eq. 12) or per one-ring edge. Each row is
+  // sum_c a_c v'_c - T_i(V') e = k with T_i(V') e = G(e) (Fits ring + offset): `Add` collects
+  // the T part, the unknown or known ring members, and the constants.
   std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd known = Eigen::VectorXd::Zero(3 * n);
+  std::vector<double> known;
   const auto& laplacian = plain.GetRegionOperator();
   const Positions& fixedPart = plain.GetFixedPart();
+  auto addTransformTerm = [&](int equation, int row, const Eigen::Vector3d& e, double scale) {
+    const int begin = this->RingOffsets[row];
+    const int size = this->RingOffsets[row + 1] - begin;
+    const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
+    const Eigen::MatrixXd transform = apply * this->Fits[row];
+    const Eigen::Vector3d constant = apply * this->FitOffsets[row];
+    for (int a = 0; a < 3; ++a)
+    {
+      known[equation + a] += scale * constant[a];
+    }
+    for (int q = 0; q < size; ++q)
+    {
+      const int member = this->RingRoiRows[begin + q];
+      const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
+      if (member < 0)
+      {
+        const Eigen::Vector3d term = block * this->RingRest.row(begin + q).transpose();
+        for (int a = 0; a < 3; ++a)
+        {
+          known[equation + a] += term[a];
+        }
+        continue;
+      }
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          triplets.emplace_back(equation + a, 3 * member + c, -block(a, c));
+        }
+      }
+    }
+  };
   for (int row = 0; row < n; ++row)
   {
     const int begin = this->RingOffsets[row];
@@ -88,43 +128,70 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
       fitMatrix.middleRows<3>(3 * q) =
         FitBlock(this->RingRest.row(begin + q) - this->RingRest.row(begin));
     }
-    this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
-    const Eigen::MatrixXd transformDelta =
-      ApplyToDelta(this->RestDelta.row(row).transpose()) * this->Fits[row];
+    this->Fits[row].setZero(4, 3 * size);
+    this->FitOffsets[row].setZero();
+    if (formulation.AllowScaling)
+    {
+      this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
+    }
+    else
+    {
+      // s = 1: fit (h, t) to what the rest ring, unscaled, leaves over.
+      const Eigen::MatrixXd fit =
+        fitMatrix.rightCols<6>().completeOrthogonalDecomposition().pseudoInverse().topRows(3);
+      this->Fits[row].bottomRows<3>() = fit;
+      this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
+    }
 
-    // Rows 3 row + c: D(V')_row - T_row(V') delta_row = -fixed part.
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
+    if (!formulation.PerEdge)
     {
-      for (int c = 0; c < 3; ++c)
+      // D(V')_i - T_i(V') delta_i = -fixed part.
+      const int equation = static_cast<int>(known.size());
+      known.resize(known.size() + 3, 0.0);
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
       {
-        triplets.emplace_back(3 * row + c, 3 * static_cast<int>(it.col()) + c, it.value());
-      }
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      known[3 * row + c] -= fixedPart(row, c);
-    }
-    for (int q = 0; q < size; ++q)
-    {
-      const int member = this->RingRoiRows[begin + q];
-      const Eigen::Matrix3d block = transformDelta.middleCols<3>(3 * q);
-      if (member >= 0)
-      {
-        for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c)
         {
-          for (int c = 0; c < 3; ++c)
-          {
-            triplets.emplace_back(3 * row + a, 3 * member + c, -block(a, c));
-          }
+          triplets.emplace_back(equation + c, 3 * static_cast<int>(it.col()) + c, it.value());
         }
       }
-      else
+      for (int c = 0; c < 3; ++c)
       {
-        known.segment<3>(3 * row) += block * this->RingRest.row(begin + q).transpose();
+        known[equation + c] -= fixedPart(row, c);
       }
+      addTransformTerm(equation, row, this->RestDelta.row(row).transpose(), 1.0);
+      continue;
+    }
+    // sqrt(w_ij) ((v'_i - v'_j) - T_i(V') (v_i - v_j)) = 0, with the row's weights.
+    const std::vector<double> weights = edgeWeights.EdgeWeights(region.Vertices[row]);
+    double total = 0.0;
+    for (double w : weights)
+    {
+      total += w;
+    }
+    for (int q = 1; q < size; ++q)
+    {
+      const double scale = std::sqrt(weights[q - 1] / total);
+      const int equation = static_cast<int>(known.size());
+      known.resize(known.size() + 3, 0.0);
+      const int member = this->RingRoiRows[begin + q];
+      for (int c = 0; c < 3; ++c)
+      {
+        triplets.emplace_back(equation + c, 3 * row + c, scale);
+        if (member >= 0)
+        {
+          triplets.emplace_back(equation + c, 3 * member + c, -scale);
+        }
+        else
+        {
+          known[equation + c] += scale * this->RingRest(begin + q, c);
+        }
+      }
+      addTransformTerm(equation, row,
+        (this->RingRest.row(begin) - this->RingRest.row(begin + q)).transpose(), scale);
     }
   }
-  Eigen::SparseMatrix<double> system(3 * n, 3 * n);
+  Eigen::SparseMatrix<double> system(static_cast<Eigen::Index>(known.size()), 3 * n);
   system.setFromTriplets(triplets.begin(), triplets.end());
   const Eigen::SparseMatrix<double> transposed = system.transpose();
   Eigen::SparseMatrix<double> normalMatrix = transposed * system;
@@ -134,7 +201,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     normalMatrix.coeffRef(k, k) += squaredWeights[k / 3];
   }
   normalMatrix.makeCompressed();
-  this->KnownRightHandSide = transposed * known;
+  this->KnownRightHandSide = transposed * Eigen::Map<const Eigen::VectorXd>(known.data(), known.size());
   const std::string error = this->Factor.Factorize(
     normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
   if (!error.empty())
@@ -214,7 +281,7 @@ Positions ImplicitSimilaritySystem::RotatedDifferentialCoordinates(const Positio
   {
     const Eigen::Vector3d delta = this->RestDelta.row(row).transpose();
     const Eigen::Vector3d transformed =
-      ApplyToDelta(delta) * (this->Fits[row] * this->Ring(row, roiPositions));
+      ApplyToDelta(delta) * (this->Fits[row] * this->Ring(row, roiPositions) + this->FitOffsets[row]);
     const double length = transformed.norm();
     const Eigen::Vector3d rescaled =
       length > 0.0 ? Eigen::Vector3d(transformed * (delta.norm() / length)) : delta;

@@ -6,7 +6,8 @@ namespace LaplacianEditing
 {
 bool RegionRequest::operator==(const RegionRequest& other) const
 {
-  if (this->Selection != other.Selection || this->AnchorPadding != other.AnchorPadding)
+  if (this->Selection != other.Selection || this->AnchorPadding != other.AnchorPadding ||
+    this->Distances != other.Distances)
   {
     return false;
   }
@@ -53,10 +54,11 @@ std::string LaplacianEditor::SelectRegion(
 {
   if (request.Selection == RegionRequest::Kind::Labeled)
   {
-    return SelectLabeledRegion(*this->Mesh, labels(), request.AnchorPadding, this->Region);
+    return SelectLabeledRegion(
+      *this->Mesh, labels(), request.AnchorPadding, this->Region, request.Distances);
   }
   return SelectGeodesicRegion(*this->Mesh, request.CenterVertex, request.HandleRadius,
-    request.ROIRadius, request.AnchorPadding, this->Region);
+    request.ROIRadius, request.AnchorPadding, this->Region, request.Distances);
 }
 
 EditStatus LaplacianEditor::Fail(bool rotationModel, RotationMode mode, std::string error)
@@ -64,7 +66,7 @@ EditStatus LaplacianEditor::Fail(bool rotationModel, RotationMode mode, std::str
   // What failed stays unbuilt; what was built before it stays valid.
   this->Ready = false;
   this->LastFailure.reset(new Failure{ this->RegionRequested, this->SystemRequested,
-    rotationModel, mode, error });
+    rotationModel, mode, this->RotationRequested.Formulation, error });
   EditStatus status;
   status.Error = std::move(error);
   return status;
@@ -134,7 +136,8 @@ EditStatus LaplacianEditor::UpdateRotationModel(const RotationOptions& rotation)
     return status;
   }
   const Failure* failed = this->LastFailure.get();
-  if (failed && failed->RotationModel && failed->Mode == rotation.Mode)
+  if (failed && failed->RotationModel && failed->Mode == rotation.Mode &&
+    failed->Formulation == rotation.Formulation)
   {
     status.Error = failed->Error;
     return status;
@@ -143,6 +146,7 @@ EditStatus LaplacianEditor::UpdateRotationModel(const RotationOptions& rotation)
   const std::string error = this->BuildRotationModel(rotation, built);
   if (!error.empty())
   {
+    this->RotationRequested = rotation;
     return this->Fail(true, rotation.Mode, "cannot factor the implicit rotation system: " + error);
   }
   status.Work = built ? RebuiltRotationModel : RebuiltNothing;
@@ -158,24 +162,29 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
     (!this->Normals || this->Normals->GetRadius() != rotation.NormalSmoothingRadius))
   {
     this->Normals = std::make_unique<SmoothNormals>();
-    this->Normals->Build(*this->Mesh, this->Region.Vertices, rotation.NormalSmoothingRadius);
+    this->Normals->Build(*this->Mesh, this->Region.Vertices, rotation.NormalSmoothingRadius,
+      this->RegionBuiltFrom.Distances);
     this->Frames = std::make_unique<LocalFrames>();
     this->Frames->Build(*this->Mesh, this->Region.Vertices,
       this->Normals->Compute(this->System.GetRestPositions()),
-      this->System.GetRestDifferentialCoordinates());
+      this->SystemBuiltFrom.Order >= 2 ? this->System.GetFirstOrderDifferentialCoordinates()
+                                       : this->System.GetRestDifferentialCoordinates());
     built = true;
   }
-  else if (rotation.Mode == RotationMode::Implicit && !this->Implicit)
+  else if (rotation.Mode == RotationMode::Implicit &&
+    (!this->Implicit || !(this->ImplicitBuiltWith == rotation.Formulation)))
   {
+    this->Implicit.reset();
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
-    const std::string error =
-      implicit->Build(*this->Mesh, this->Region, this->System, this->SystemBuiltFrom);
+    const std::string error = implicit->Build(
+      *this->Mesh, this->Region, this->System, this->SystemBuiltFrom, rotation.Formulation);
     if (!error.empty())
     {
       return error;
     }
     this->Record(implicit->GetFactor());
     this->Implicit = std::move(implicit);
+    this->ImplicitBuiltWith = rotation.Formulation;
     built = true;
   }
   return {};
@@ -207,8 +216,12 @@ EditStatus LaplacianEditor::Solve(
          pass < std::max(rotation.Iterations, 1);
          ++pass)
     {
-      const Positions rotated = this->Frames->Rotate(
+      Positions rotated = this->Frames->Rotate(
         roiPositions, this->Normals->Compute(roiPositions, this->Loop), this->Loop);
+      if (this->SystemBuiltFrom.Order >= 2)
+      {
+        rotated = this->System.ComposeSecondOrder(rotated);
+      }
       roiPositions = this->System.SolveWithDifferentialCoordinates(rotated, handleMaps);
     }
   }

@@ -42,6 +42,8 @@ struct RegionRequest
   double AnchorPadding = 0.1;
   /// Labeled: changes whenever the labels may have changed.
   std::uint64_t LabelsVersion = 0;
+  /// How distances are measured (region, anchors, normal smoothing).
+  DistanceMethod Distances = DistanceMethod::FastMarching;
 
   bool operator==(const RegionRequest& other) const;
   bool operator!=(const RegionRequest& other) const { return !(*this == other); }
@@ -63,6 +65,8 @@ struct RotationOptions
   int Iterations = 1;
   /// Implicit mode: the rescaling pass.
   bool PreserveDetailScale = false;
+  /// Implicit mode: which energy (see ImplicitSimilaritySystem.h).
+  ImplicitFormulation Formulation;
 };
 
 /// What an Update rebuilt (bit flags).
@@ -136,14 +140,16 @@ private:
   DeformationOptions SystemBuiltFrom;
   RegionRequest RegionRequested;
   DeformationOptions SystemRequested;
+  RotationOptions RotationRequested;
   RotationOptions Rotation;
   EditRegion Region;
   DeformationSystem System;
   // Explicit mode, keyed on the smoothing radius.
   std::unique_ptr<SmoothNormals> Normals;
   std::unique_ptr<LocalFrames> Frames;
-  // Implicit mode.
+  // Implicit mode, and the formulation it was built with.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
+  ImplicitFormulation ImplicitBuiltWith;
   // The last request that failed, and why; Mode is set when the rotation model failed.
   struct Failure
   {
@@ -151,6 +157,7 @@ private:
     DeformationOptions System;
     bool RotationModel = false;
     RotationMode Mode = RotationMode::None;
+    ImplicitFormulation Formulation;
     std::string Error;
   };
   std::unique_ptr<Failure> LastFailure;

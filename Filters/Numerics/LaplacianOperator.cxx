@@ -42,6 +42,41 @@ LaplacianOperator::LaplacianOperator(const SurfaceMesh& mesh, LaplacianWeights w
 {
 }
 
+std::vector<double> LaplacianOperator::EdgeWeights(int v) const
+{
+  const int valence = this->Mesh.GetValence(v);
+  const int* neighbors = this->Mesh.NeighborsBegin(v);
+  std::vector<double> weights(valence, 1.0);
+  if (this->Weights == LaplacianWeights::Uniform || valence == 0)
+  {
+    return weights;
+  }
+  std::fill(weights.begin(), weights.end(), 0.0);
+  const auto& p = this->Mesh.GetPositions();
+  auto slot = [&](int w) { return std::lower_bound(neighbors, neighbors + valence, w) - neighbors; };
+  for (const int* t = this->Mesh.TrianglesBegin(v); t != this->Mesh.TrianglesEnd(v); ++t)
+  {
+    const auto& tri = this->Mesh.GetTriangles()[*t];
+    const int corner = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
+    const int a = tri[(corner + 1) % 3];
+    const int b = tri[(corner + 2) % 3];
+    // The angle at b faces edge (v, a); the angle at a faces edge (v, b).
+    weights[slot(a)] += 0.5 * RobustCotangent(p[v] - p[b], p[a] - p[b]);
+    weights[slot(b)] += 0.5 * RobustCotangent(p[v] - p[a], p[b] - p[a]);
+  }
+  double total = 0.0;
+  for (double& w : weights)
+  {
+    w = std::max(w, 0.0);
+    total += w;
+  }
+  if (!(total > 1e-12) || !std::isfinite(total))
+  {
+    std::fill(weights.begin(), weights.end(), 1.0);
+  }
+  return weights;
+}
+
 SparseRow LaplacianOperator::FirstOrderRow(int v) const
 {
   const int valence = this->Mesh.GetValence(v);
@@ -52,32 +87,11 @@ SparseRow LaplacianOperator::FirstOrderRow(int v) const
     return row;
   }
   const int* neighbors = this->Mesh.NeighborsBegin(v);
-  std::vector<double> weights(valence, 0.0);
+  const std::vector<double> weights = this->EdgeWeights(v);
   double total = 0.0;
-  if (this->Weights == LaplacianWeights::Cotangent)
+  for (double w : weights)
   {
-    const auto& p = this->Mesh.GetPositions();
-    auto slot = [&](int w) { return std::lower_bound(neighbors, neighbors + valence, w) - neighbors; };
-    for (const int* t = this->Mesh.TrianglesBegin(v); t != this->Mesh.TrianglesEnd(v); ++t)
-    {
-      const auto& tri = this->Mesh.GetTriangles()[*t];
-      const int corner = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
-      const int a = tri[(corner + 1) % 3];
-      const int b = tri[(corner + 2) % 3];
-      // The angle at b faces edge (v, a); the angle at a faces edge (v, b).
-      weights[slot(a)] += 0.5 * RobustCotangent(p[v] - p[b], p[a] - p[b]);
-      weights[slot(b)] += 0.5 * RobustCotangent(p[v] - p[a], p[b] - p[a]);
-    }
-    for (double& w : weights)
-    {
-      w = std::max(w, 0.0);
-      total += w;
-    }
-  }
-  if (!(total > 1e-12) || !std::isfinite(total))
-  {
-    std::fill(weights.begin(), weights.end(), 1.0);
-    total = valence;
+    total += w;
   }
   // Neighbours are sorted; insert the diagonal in order.
   bool diagonalPlaced = false;

@@ -36,6 +36,12 @@ class LaplacianOperator
 public:
   LaplacianOperator(const SurfaceMesh& mesh, LaplacianWeights weights);
 
+  /// The weights of the edges from `v` to each of its neighbours (in the order of
+  /// SurfaceMesh::NeighborsBegin), before the row's normalization: 1 (uniform), or the clamped
+  /// (cot a + cot b) / 2 with the uniform fallback (cotangent). Symmetric except where one end
+  /// falls back.
+  std::vector<double> EdgeWeights(int v) const;
+
   /// Row `v` of L^order, for order 1 or 2.
   SparseRow Row(int v, int order) const;
 

@@ -14,9 +14,11 @@ double FallOff(double distance, double radius)
 }
 }
 
-void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius)
+void SmoothNormals::Build(
+  const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius, DistanceMethod method)
 {
   this->Radius = radius;
+  this->Method = method;
   const auto& positions = mesh.GetPositions();
   const int n = static_cast<int>(vertices.size());
   const double spacing = 0.25 * radius;
@@ -43,7 +45,7 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
   // from it gives its kernel, the vertices it covers and the vertices it blends into.
   std::vector<char> covered(n, 0);
   std::vector<Eigen::Triplet<double>> sampleTriplets, blendTriplets;
-  GeodesicSearch search(mesh);
+  GeodesicSearch search(mesh, method);
   int samples = 0;
   for (int row = 0; row < n; ++row)
   {

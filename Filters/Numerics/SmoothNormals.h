@@ -15,6 +15,7 @@
 #define LaplacianEditing_SmoothNormals_h
 
 #include "ParallelFor.h"
+#include "GeodesicDistance.h"
 #include "SurfaceMesh.h"
 
 #include <Eigen/SparseCore>
@@ -30,16 +31,19 @@ class SmoothNormals
 {
 public:
   /// Precomputes the samples and weights for the ROI `vertices` and support radius `radius`.
-  void Build(const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius);
+  void Build(const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius,
+    DistanceMethod method = DistanceMethod::FastMarching);
 
   /// Unit smooth normals at the ROI vertices, for ROI positions `roiPositions` (rows follow
   /// `vertices`); vertices outside the ROI keep their rest positions.
   Positions Compute(const Positions& roiPositions, const ParallelFor& loop = SerialFor) const;
 
   double GetRadius() const { return this->Radius; }
+  DistanceMethod GetDistanceMethod() const { return this->Method; }
 
 private:
   double Radius = 0.0;
+  DistanceMethod Method = DistanceMethod::FastMarching;
   // Rows: samples; columns: support vertices (within the radius of a sample).
   Eigen::SparseMatrix<double, Eigen::RowMajor> SampleWeights;
   // Rows: ROI vertices; columns: samples within half the radius.

@@ -12,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <functional>
 
 using namespace LaplacianEditing;
@@ -65,6 +67,73 @@ TEST(GeodesicDistance, FollowsEdgesOnAGrid)
   EXPECT_NEAR(d[120], std::sqrt(2.0), 1e-12);    // along the diagonal edges
   const auto limited = ComputeGeodesicDistances(mesh, { 0 }, 0.25);
   EXPECT_TRUE(std::isinf(limited[10]));
+}
+
+namespace
+{
+// How far a disc of `radius` about the grid's centre reaches in 16 directions: the largest
+// over the smallest extent (1 for a round disc).
+double DiscExtentRatio(DistanceMethod method, double* worstError = nullptr, double* meanError = nullptr)
+{
+  const SurfaceMesh mesh = MakeGrid(100, 100);
+  const Vector3 center(0.5, 0.5, 0.0);
+  const double radius = 0.3;
+  const auto d = ComputeGeodesicDistances(mesh, { mesh.FindNearestVertex(center) }, radius, method);
+  const double pi = std::acos(-1.0);
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
+  for (int k = 0; k < 16; ++k)
+  {
+    const double angle = 2.0 * pi * k / 16.0;
+    double extent = 0.0;
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      const Vector3 offset = mesh.GetPositions()[v] - center;
+      const double off = std::remainder(std::atan2(offset.y(), offset.x()) - angle, 2.0 * pi);
+      if (std::isfinite(d[v]) && std::abs(off) < pi / 32.0)
+      {
+        extent = std::max(extent, offset.norm());
+      }
+    }
+    smallest = std::min(smallest, extent);
+    largest = std::max(largest, extent);
+  }
+  if (worstError && meanError)
+  {
+    *worstError = *meanError = 0.0;
+    int count = 0;
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      const double euclidean = (mesh.GetPositions()[v] - center).norm();
+      if (std::isfinite(d[v]) && euclidean > 0.05)
+      {
+        const double error = std::abs(d[v] - euclidean) / euclidean;
+        *worstError = std::max(*worstError, error);
+        *meanError += error;
+        ++count;
+      }
+    }
+    *meanError /= std::max(count, 1);
+  }
+  return largest / smallest;
+}
+}
+
+TEST(GeodesicDistance, FastMarchingDiscsAreRound)
+{
+  // A disc of radius 0.3 on a regular 100 x 100 grid (the quads split along one diagonal).
+  // Required: its extent over 16 directions varies by at most 5% with fast marching, where
+  // edge paths make a skewed hexagon (measured: 1.026 and 1.397); on this plane, distances
+  // beyond 0.05 within 2% of the Euclidean ones on average and 8% at worst (measured 1.6% and
+  // 7.4%, where the front runs along the diagonals' 45-degree corners).
+  double worstError = 0.0, meanError = 0.0;
+  const double marching = DiscExtentRatio(DistanceMethod::FastMarching, &worstError, &meanError);
+  const double edgePaths = DiscExtentRatio(DistanceMethod::EdgePaths);
+  std::printf("disc extent ratio: fast marching %.3f (relative error mean %.4f, worst %.4f), "
+              "edge paths %.3f\n", marching, meanError, worstError, edgePaths);
+  EXPECT_LE(marching, 1.05);
+  EXPECT_LT(meanError, 0.02);
+  EXPECT_LT(worstError, 0.08);
+  EXPECT_GT(edgePaths, 1.2);
 }
 
 TEST(LaplacianOperator, UniformRankIsVerticesMinusComponents)

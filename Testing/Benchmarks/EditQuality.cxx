@@ -1,0 +1,204 @@
+// The quality of large edits, measured against CGAL 5.5's Surface_mesh_deformation (ARAP) on the
+// same vertex sets; prints one JSON line per edit.
+//
+//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|all]
+//
+// Edits:
+//  - cactus: CGAL's cactus.off with cactus.sel (0 fixed, 1 ROI, 2 handle) and the 70-degree
+//    turn of cactus.def, in array selection;
+//  - twist: stanford-bunny.obj with unused vertices dropped; the handle is the highest vertex
+//    (an ear tip), with an edge-path ROI of 0.15 and a handle of 0.03 of the diagonal; it turns
+//    120 degrees about the ear's long axis (the principal axis of the ROI) through the handle's
+//    centroid;
+//  - armadillo: Armadillo.ply's hand, the handle at vertex 0 (a fingertip), ROI 0.25 and handle
+//    0.04 of the diagonal, translated by 0.01 of the diagonal.
+//
+// For each mode: the ARAP energy of the result (per ROI vertex, the best rotation of its
+// one-ring and the weighted squared residual of its edges, normalized by the ROI's weighted
+// squared edge lengths; clamped cotangent weights), the ROI's area ratio, the faces turned over,
+// setup and update seconds. For CGAL ARAP (its default, cotangent weights), the same after 1, 5,
+// 50 and 1000 iterations from the rest shape, with the seconds spent.
+#include "ReferenceEdits.h"
+
+#include "vtkLaplacianDeformationFilter.h"
+
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTransform.h"
+
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_deformation.h>
+#endif
+
+#include <chrono>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace le = LaplacianEditing;
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct Mode
+{
+  const char* Name;
+  int Rotation;
+  int Iterations;
+  int ImplicitFormulation;
+};
+
+std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured, const Mode& mode)
+{
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  ReferenceEdits::Configure(edit, filter);
+  filter->SetRotationMode(mode.Rotation);
+  filter->SetNumberOfIterations(mode.Iterations);
+  filter->SetImplicitFormulation(mode.ImplicitFormulation);
+  filter->Update(); // setup
+  const double setup = filter->GetSetupTime();
+  filter->SetHandleTransform(const_cast<vtkTransform*>(edit.Handle.Get()));
+  const Clock::time_point start = Clock::now();
+  filter->Update();
+  const double update = SecondsSince(start);
+  std::ostringstream json;
+  json << std::setprecision(5) << "\"" << mode.Name << "\": {"
+       << measured.Json(ReferenceEdits::PointsOf(filter->GetOutput())) << ", \"free_motion_ratio\": "
+       << measured.FreeMotionRatio(ReferenceEdits::PointsOf(filter->GetOutput()), edit.Labels)
+       << ", \"setup_seconds\": " << setup
+       << ", \"update_seconds\": " << update << "}";
+  return json.str();
+}
+
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+// CGAL ARAP from the rest shape: the measures after each iteration count, with the seconds.
+std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured)
+{
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  using Vertex = Mesh::Vertex_index;
+  using Deformation = CGAL::Surface_mesh_deformation<Mesh>;
+
+  Mesh surface;
+  std::vector<Vertex> vertices;
+  for (const le::Vector3& p : ReferenceEdits::PointsOf(edit.Mesh))
+  {
+    vertices.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
+  }
+  auto cells = vtk::TakeSmartPointer(edit.Mesh->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    std::vector<Vertex> face;
+    for (vtkIdType c = 0; c < size; ++c)
+    {
+      face.push_back(vertices[ids[c]]);
+    }
+    surface.add_face(face);
+  }
+  Deformation deformation(surface);
+  for (vtkIdType i = 0; i < edit.Labels->GetNumberOfTuples(); ++i)
+  {
+    if (edit.Labels->GetValue(i) > 0)
+    {
+      deformation.insert_roi_vertex(vertices[i]);
+    }
+    if (edit.Labels->GetValue(i) == 2)
+    {
+      deformation.insert_control_vertex(vertices[i]);
+      const Kernel::Point_3& p = surface.point(vertices[i]);
+      double moved[3];
+      edit.Handle->TransformPoint(std::array<double, 3>{ p.x(), p.y(), p.z() }.data(), moved);
+      deformation.set_target_position(vertices[i], Kernel::Point_3(moved[0], moved[1], moved[2]));
+    }
+  }
+  Clock::time_point start = Clock::now();
+  const bool ready = deformation.preprocess();
+  const double preprocess = SecondsSince(start);
+  std::ostringstream json;
+  json << std::setprecision(5) << "\"cgal_arap\": {\"preprocess_ok\": " << (ready ? "true" : "false")
+       << ", \"preprocess_seconds\": " << preprocess;
+  double seconds = 0.0;
+  int done = 0;
+  for (int iterations : { 1, 5, 50, 1000 })
+  {
+    start = Clock::now();
+    deformation.deform(iterations - done, 0.0); // continues from the current result
+    seconds += SecondsSince(start);
+    done = iterations;
+    std::vector<le::Vector3> deformed;
+    for (Vertex v : vertices)
+    {
+      const Kernel::Point_3& p = surface.point(v);
+      deformed.emplace_back(p.x(), p.y(), p.z());
+    }
+    json << ", \"" << iterations << "\": {" << measured.Json(deformed)
+         << ", \"free_motion_ratio\": " << measured.FreeMotionRatio(deformed, edit.Labels)
+         << ", \"deform_seconds\": " << seconds << "}";
+  }
+  json << "}";
+  return json.str();
+}
+#endif
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2 || std::string(argv[1]) == "--help")
+  {
+    std::cerr << "usage: " << argv[0] << " DATA_DIR [--edit cactus|twist|armadillo|all]\n";
+    return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
+  }
+  const std::string data = argv[1];
+  const std::string which = argc > 3 && std::string(argv[2]) == "--edit" ? argv[3] : "all";
+  const Mode modes[] = { { "none", vtkLaplacianDeformationFilter::ROTATION_NONE, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
+    { "explicit1", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
+    { "explicit5", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 5, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
+    { "implicit", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
+    { "implicit_paper", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PAPER } };
+  for (const std::string name : { "cactus", "twist", "armadillo" })
+  {
+    if (which != "all" && which != name)
+    {
+      continue;
+    }
+    ReferenceEdits::Edit edit;
+    edit.Name = name;
+    const bool loaded = name == "cactus" ? ReferenceEdits::LoadCactus(data, edit)
+      : name == "twist"                  ? ReferenceEdits::LoadTwist(data, edit)
+                                         : ReferenceEdits::LoadArmadilloHand(data, edit);
+    if (!loaded)
+    {
+      return EXIT_FAILURE;
+    }
+    const ReferenceEdits::Measured measured(edit.Mesh, edit.Labels);
+    std::cout << "{\"edit\": \"" << name << "\", \"vertices\": " << edit.Mesh->GetNumberOfPoints()
+              << ", \"roi_vertices\": " << measured.Region.size();
+    for (const Mode& mode : modes)
+    {
+      std::cout << ", " << MeasureMode(edit, measured, mode);
+    }
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+    std::cout << ", " << MeasureCGAL(edit, measured);
+#endif
+    std::cout << "}" << std::endl;
+  }
+  return EXIT_SUCCESS;
+}
