@@ -39,7 +39,9 @@ static_assert(static_cast<int>(le::LaplacianWeights::Uniform) ==
 static_assert(static_cast<int>(le::RotationMode::None) ==
     vtkLaplacianDeformationFilter::ROTATION_NONE &&
   static_cast<int>(le::RotationMode::Explicit) == vtkLaplacianDeformationFilter::ROTATION_EXPLICIT &&
-  static_cast<int>(le::RotationMode::Implicit) == vtkLaplacianDeformationFilter::ROTATION_IMPLICIT);
+  static_cast<int>(le::RotationMode::Implicit) == vtkLaplacianDeformationFilter::ROTATION_IMPLICIT &&
+  static_cast<int>(le::RotationMode::AsRigidAsPossible) ==
+    vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE);
 static_assert(static_cast<int>(le::SolverBackend::Cholmod) ==
     vtkLaplacianDeformationFilter::SOLVER_CHOLMOD &&
   static_cast<int>(le::SolverBackend::SimplicialLDLT) ==
@@ -253,6 +255,8 @@ void vtkLaplacianDeformationFilter::ResetStatistics()
   this->AnalysisTime = 0.0;
   this->FactorizationTime = 0.0;
   this->SolveTime = 0.0;
+  this->NumberOfARAPIterations = 0;
+  this->ARAPEnergy = 0.0;
 }
 
 bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
@@ -369,6 +373,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   system.AnchorWeight = this->AnchorWeight;
   system.Backend = static_cast<le::SolverBackend>(this->Solver);
   system.Ordering = static_cast<le::FillOrdering>(this->Ordering);
+  system.LeastSquares = this->RotationMode != ROTATION_AS_RIGID_AS_POSSIBLE;
   system.MaximumFactorBytes = 1048576.0 *
     (this->MaximumFactorMemory > 0.0 ? this->MaximumFactorMemory : internals.AvailableMemory);
 
@@ -402,6 +407,9 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   const bool paper = this->ImplicitFormulation == IMPLICIT_PAPER;
   rotation.Formulation.PerEdge = !paper;
   rotation.Formulation.AllowScaling = paper;
+  rotation.Arap.MaximumIterations = this->ARAPIterations;
+  rotation.Arap.Tolerance = this->Convergence;
+  rotation.Arap.Accelerate = this->Acceleration != 0;
 
   const Clock::time_point start = Clock::now();
   const le::EditStatus status = internals.Editor.UpdateRotationModel(rotation);
@@ -449,6 +457,9 @@ bool vtkLaplacianDeformationFilter::Solve()
   const Clock::time_point start = Clock::now();
   const le::EditStatus status = internals.Editor.Solve(internals.Maps, internals.Solution);
   this->SolveTime = SecondsSince(start);
+  const bool arap = this->RotationMode == ROTATION_AS_RIGID_AS_POSSIBLE;
+  this->NumberOfARAPIterations = arap ? internals.Editor.GetLastArapResult().Iterations : 0;
+  this->ARAPEnergy = arap ? internals.Editor.GetLastArapResult().Energy : 0.0;
   return status.Ok() ? true : this->Fail("Cannot edit: " + status.Error + ".");
 }
 
@@ -556,6 +567,11 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "PreserveDetailScale: " << this->PreserveDetailScale << "\n";
   os << indent << "ImplicitFormulation: " << this->ImplicitFormulation << "\n";
+  os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
+  os << indent << "Convergence: " << this->Convergence << "\n";
+  os << indent << "Acceleration: " << this->Acceleration << "\n";
+  os << indent << "NumberOfARAPIterations: " << this->NumberOfARAPIterations << "\n";
+  os << indent << "ARAPEnergy: " << this->ARAPEnergy << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "Ordering: " << this->Ordering << "\n";
   os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << "\n";

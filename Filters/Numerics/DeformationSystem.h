@@ -37,6 +37,9 @@ struct DeformationOptions
   double AnchorWeight = 1.0;
   SolverBackend Backend = SolverBackend::Cholmod;
   FillOrdering Ordering = FillOrdering::Automatic;
+  /// Whether the paper's soft-constraint least-squares system is built and factored (every
+  /// mode but as-rigid-as-possible, which has its own square system).
+  bool LeastSquares = true;
   /// Largest factor to attempt, in bytes (0: no limit; CHOLMOD only). A new limit is tried
   /// anew, so it takes part in equality.
   double MaximumFactorBytes = 0.0;
@@ -46,7 +49,8 @@ struct DeformationOptions
     return this->Weights == other.Weights && this->Order == other.Order &&
       this->HandleWeight == other.HandleWeight && this->AnchorWeight == other.AnchorWeight &&
       this->Backend == other.Backend && this->Ordering == other.Ordering &&
-      this->MaximumFactorBytes == other.MaximumFactorBytes;
+      this->MaximumFactorBytes == other.MaximumFactorBytes &&
+      this->LeastSquares == other.LeastSquares;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };

@@ -29,6 +29,7 @@ void LaplacianEditor::SetMesh(std::shared_ptr<const SurfaceMesh> mesh)
   this->Normals.reset();
   this->Frames.reset();
   this->Implicit.reset();
+  this->Arap.reset();
   this->LastFailure.reset();
 }
 
@@ -39,7 +40,8 @@ double LaplacianEditor::GetFactorBytes() const
     return 0.0;
   }
   return this->System.GetFactor().GetFactorBytes() +
-    (this->Implicit ? this->Implicit->GetFactor().GetFactorBytes() : 0.0);
+    (this->Implicit ? this->Implicit->GetFactor().GetFactorBytes() : 0.0) +
+    (this->Arap ? this->Arap->GetFactor().GetFactorBytes() : 0.0);
 }
 
 void LaplacianEditor::Record(const SparseCholesky& factor)
@@ -109,12 +111,18 @@ EditStatus LaplacianEditor::UpdateRegion(const RegionRequest& region,
     this->Normals.reset();
     this->Frames.reset();
     this->Implicit.reset();
-    const std::string error = this->System.Build(*this->Mesh, this->Region, system);
+    this->Arap.reset();
+    this->System = DeformationSystem();
+    const std::string error =
+      system.LeastSquares ? this->System.Build(*this->Mesh, this->Region, system) : std::string();
     if (!error.empty())
     {
       return this->Fail(false, RotationMode::None, "cannot factor the editing system: " + error);
     }
-    this->Record(this->System.GetFactor());
+    if (system.LeastSquares)
+    {
+      this->Record(this->System.GetFactor());
+    }
     this->SystemBuiltFrom = system;
     this->HasSystemOptions = true;
     status.Work |= RebuiltSystem;
@@ -142,12 +150,18 @@ EditStatus LaplacianEditor::UpdateRotationModel(const RotationOptions& rotation)
     status.Error = failed->Error;
     return status;
   }
+  if ((rotation.Mode == RotationMode::AsRigidAsPossible) == this->SystemBuiltFrom.LeastSquares)
+  {
+    status.Error = "the region's system was built for another mode: UpdateRegion with "
+                   "LeastSquares off for the as-rigid-as-possible mode, on for the others";
+    return status;
+  }
   bool built = false;
   const std::string error = this->BuildRotationModel(rotation, built);
   if (!error.empty())
   {
     this->RotationRequested = rotation;
-    return this->Fail(true, rotation.Mode, "cannot factor the implicit rotation system: " + error);
+    return this->Fail(true, rotation.Mode, "cannot prepare the rotation mode: " + error);
   }
   status.Work = built ? RebuiltRotationModel : RebuiltNothing;
   this->Rotation = rotation;
@@ -171,6 +185,19 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
                                        : this->System.GetRestDifferentialCoordinates());
     built = true;
   }
+  else if (rotation.Mode == RotationMode::AsRigidAsPossible && !this->Arap)
+  {
+    auto arap = std::make_unique<AsRigidAsPossibleSolver>();
+    const std::string error = arap->Build(*this->Mesh, this->Region, this->SystemBuiltFrom);
+    if (!error.empty())
+    {
+      return error;
+    }
+    this->Record(arap->GetFactor());
+    this->Arap = std::move(arap);
+    this->ArapPositions.resize(0, 3);
+    built = true;
+  }
   else if (rotation.Mode == RotationMode::Implicit &&
     (!this->Implicit || !(this->ImplicitBuiltWith == rotation.Formulation)))
   {
@@ -190,8 +217,7 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
   return {};
 }
 
-EditStatus LaplacianEditor::Solve(
-  const std::vector<AffineMap>& handleMaps, Positions& roiPositions) const
+EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions)
 {
   EditStatus status;
   if (!this->Ready)
@@ -200,7 +226,17 @@ EditStatus LaplacianEditor::Solve(
     return status;
   }
   const RotationOptions& rotation = this->Rotation;
-  if (rotation.Mode == RotationMode::Implicit)
+  if (rotation.Mode == RotationMode::AsRigidAsPossible)
+  {
+    // A drag continues from the last result; a new region starts from the rest edges.
+    if (this->ArapPositions.rows() != this->Region.GetNumberOfVertices())
+    {
+      this->ArapPositions = this->Arap->InitialGuess(handleMaps);
+    }
+    this->LastArap = this->Arap->Solve(handleMaps, this->ArapPositions, rotation.Arap, this->Loop);
+    roiPositions = this->ArapPositions;
+  }
+  else if (rotation.Mode == RotationMode::Implicit)
   {
     roiPositions = this->Implicit->Solve(handleMaps);
     if (rotation.PreserveDetailScale)

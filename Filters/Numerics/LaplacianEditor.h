@@ -7,13 +7,17 @@
 //  - Explicit: take that reconstruction as the reference, estimate smooth normals on it
 //    (Section 7), rotate each delta by its local frame's rotation (Section 4), solve again with
 //    the same factor; each further iteration uses the previous result as the reference.
-//  - Implicit: solve the coupled system of linearized similarities (Section 5). Optionally,
-//    rescale each transformed delta to its rest length and solve the Laplacian system once more
-//    (as Sorkine et al. 2004), which removes the linearization's growth of details under large
-//    rotations.
+//  - Implicit: solve the coupled system of linearized transforms (Section 5; see
+//    ImplicitSimilaritySystem.h). Optionally, rescale each transformed delta to its rest length
+//    and solve the Laplacian system once more (as Sorkine et al. 2004), which removes the
+//    linearization's growth of details under large rotations.
+//  - AsRigidAsPossible: the local-global iteration of Sorkine and Alexa (2007) on its own square
+//    system; it needs no least-squares system (DeformationOptions::LeastSquares off). Each solve
+//    starts from the previous result of the same region, so a drag keeps converging.
 #ifndef LaplacianEditing_LaplacianEditor_h
 #define LaplacianEditing_LaplacianEditor_h
 
+#include "AsRigidAsPossibleSolver.h"
 #include "DeformationSystem.h"
 #include "ImplicitSimilaritySystem.h"
 #include "LocalFrames.h"
@@ -53,7 +57,8 @@ enum class RotationMode
 {
   None,
   Explicit,
-  Implicit
+  Implicit,
+  AsRigidAsPossible
 };
 
 struct RotationOptions
@@ -67,6 +72,8 @@ struct RotationOptions
   bool PreserveDetailScale = false;
   /// Implicit mode: which energy (see ImplicitSimilaritySystem.h).
   ImplicitFormulation Formulation;
+  /// As-rigid-as-possible mode: the work per solve.
+  ArapOptions Arap;
 };
 
 /// What an Update rebuilt (bit flags).
@@ -108,7 +115,10 @@ public:
 
   /// The ROI positions for the handle maps (rows follow GetRegion().Vertices). Needs a
   /// successful Update with the same rotation options.
-  EditStatus Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions) const;
+  EditStatus Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions);
+
+  /// As-rigid-as-possible mode: what the last solve did.
+  const ArapResult& GetLastArapResult() const { return this->LastArap; }
 
   const EditRegion& GetRegion() const { return this->Region; }
   bool HasRegion() const { return this->Ready; }
@@ -147,6 +157,10 @@ private:
   // Explicit mode, keyed on the smoothing radius.
   std::unique_ptr<SmoothNormals> Normals;
   std::unique_ptr<LocalFrames> Frames;
+  // As-rigid-as-possible mode, and its last result (the next solve's start).
+  std::unique_ptr<AsRigidAsPossibleSolver> Arap;
+  Positions ArapPositions;
+  ArapResult LastArap;
   // Implicit mode, and the formulation it was built with.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
   ImplicitFormulation ImplicitBuiltWith;

@@ -61,25 +61,42 @@ struct Mode
   int Rotation;
   int Iterations;
   int ImplicitFormulation;
+  int ARAPIterations = 20;
+  double Convergence = 1e-3;
+  bool Accelerate = true;
 };
 
-std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured, const Mode& mode)
+std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured,
+  const Mode& mode, double* energy = nullptr)
 {
   vtkNew<vtkLaplacianDeformationFilter> filter;
   ReferenceEdits::Configure(edit, filter);
   filter->SetRotationMode(mode.Rotation);
   filter->SetNumberOfIterations(mode.Iterations);
   filter->SetImplicitFormulation(mode.ImplicitFormulation);
+  filter->SetARAPIterations(mode.ARAPIterations);
+  filter->SetConvergence(mode.Convergence);
+  filter->SetAcceleration(mode.Accelerate);
+  if (mode.Rotation == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE)
+  {
+    filter->SetLaplacianWeightsToCotangent(); // as CGAL's ARAP and the measure
+  }
   filter->Update(); // setup
   const double setup = filter->GetSetupTime();
   filter->SetHandleTransform(const_cast<vtkTransform*>(edit.Handle.Get()));
   const Clock::time_point start = Clock::now();
   filter->Update();
   const double update = SecondsSince(start);
+  if (energy)
+  {
+    const auto deformed = ReferenceEdits::PointsOf(filter->GetOutput());
+    *energy = le::MeasureEdit(measured.Mesh, measured.Region, deformed).Energy;
+  }
   std::ostringstream json;
   json << std::setprecision(5) << "\"" << mode.Name << "\": {"
        << measured.Json(ReferenceEdits::PointsOf(filter->GetOutput())) << ", \"free_motion_ratio\": "
        << measured.FreeMotionRatio(ReferenceEdits::PointsOf(filter->GetOutput()), edit.Labels)
+       << ", \"arap_iterations\": " << filter->GetNumberOfARAPIterations()
        << ", \"setup_seconds\": " << setup
        << ", \"update_seconds\": " << update << "}";
   return json.str();
@@ -87,7 +104,8 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
 // CGAL ARAP from the rest shape: the measures after each iteration count, with the seconds.
-std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured)
+std::string MeasureCGAL(
+  const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured, double target)
 {
   using Kernel = CGAL::Simple_cartesian<double>;
   using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -135,23 +153,39 @@ std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::
   std::ostringstream json;
   json << std::setprecision(5) << "\"cgal_arap\": {\"preprocess_ok\": " << (ready ? "true" : "false")
        << ", \"preprocess_seconds\": " << preprocess;
+  // One iteration at a time (only deform() is timed): the measures after 1, 5, 50 and 1000
+  // iterations, and when CGAL first reaches `target` (our ARAP mode's energy).
   double seconds = 0.0;
-  int done = 0;
-  for (int iterations : { 1, 5, 50, 1000 })
+  bool reached = false;
+  for (int iteration = 1; iteration <= 1000; ++iteration)
   {
     start = Clock::now();
-    deformation.deform(iterations - done, 0.0); // continues from the current result
+    deformation.deform(1, 0.0); // continues from the current result
     seconds += SecondsSince(start);
-    done = iterations;
+    const bool report = iteration == 1 || iteration == 5 || iteration == 50 || iteration == 1000;
+    if (!report && (reached || iteration % 5 != 0))
+    {
+      continue; // the energy is checked every fifth iteration until reached
+    }
     std::vector<le::Vector3> deformed;
     for (Vertex v : vertices)
     {
       const Kernel::Point_3& p = surface.point(v);
       deformed.emplace_back(p.x(), p.y(), p.z());
     }
-    json << ", \"" << iterations << "\": {" << measured.Json(deformed)
-         << ", \"free_motion_ratio\": " << measured.FreeMotionRatio(deformed, edit.Labels)
-         << ", \"deform_seconds\": " << seconds << "}";
+    const double energy = le::MeasureEdit(measured.Mesh, measured.Region, deformed).Energy;
+    if (!reached && energy <= target)
+    {
+      reached = true;
+      json << ", \"reaches_arap_energy\": {\"iterations\": " << iteration
+           << ", \"deform_seconds\": " << seconds << "}";
+    }
+    if (report)
+    {
+      json << ", \"" << iteration << "\": {" << measured.Json(deformed)
+           << ", \"free_motion_ratio\": " << measured.FreeMotionRatio(deformed, edit.Labels)
+           << ", \"deform_seconds\": " << seconds << "}";
+    }
   }
   json << "}";
   return json.str();
@@ -172,7 +206,10 @@ int main(int argc, char* argv[])
     { "explicit1", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "explicit5", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 5, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "implicit", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
-    { "implicit_paper", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PAPER } };
+    { "implicit_paper", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PAPER },
+    { "arap", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0 },
+    { "arap_converged", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0, 1000, 1e-7 },
+    { "arap_plain_converged", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0, 1000, 1e-7, false } };
   for (const std::string name : { "cactus", "twist", "armadillo" })
   {
     if (which != "all" && which != name)
@@ -191,12 +228,15 @@ int main(int argc, char* argv[])
     const ReferenceEdits::Measured measured(edit.Mesh, edit.Labels);
     std::cout << "{\"edit\": \"" << name << "\", \"vertices\": " << edit.Mesh->GetNumberOfPoints()
               << ", \"roi_vertices\": " << measured.Region.size();
+    double arapEnergy = 0.0;
     for (const Mode& mode : modes)
     {
-      std::cout << ", " << MeasureMode(edit, measured, mode);
+      std::cout << ", "
+                << MeasureMode(edit, measured, mode,
+                     std::string(mode.Name) == "arap" ? &arapEnergy : nullptr);
     }
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
-    std::cout << ", " << MeasureCGAL(edit, measured);
+    std::cout << ", " << MeasureCGAL(edit, measured, arapEnergy);
 #endif
     std::cout << "}" << std::endl;
   }

@@ -6,7 +6,11 @@
 //                   explicit rotations
 //   Fig3Orders      the paper's Fig. 3: a strip pulled up, first and second order
 //   BunnyModes      the Stanford bunny's ear bent: none, explicit, implicit
+//   CactusModes     CGAL's cactus edit (.sel/.def, a 70-degree turn): none, explicit (five
+//                   iterations), implicit, as rigid as possible (cotangent weights)
+//   TwistModes      the bunny's ear twisted 120 degrees about its axis, in the same modes
 #include "EditingScene.h"
+#include "ReferenceEdits.h"
 
 #include "vtkBumpyPlaneSource.h"
 #include "vtkLaplacianDeformationFilter.h"
@@ -168,11 +172,59 @@ Scene BunnyModes(const std::string& data)
 }
 }
 
+// One edit in every rotation mode, side by side.
+Scene EveryMode(const ReferenceEdits::Edit& edit)
+{
+  Scene scene;
+  for (int mode : { Filter::ROTATION_NONE, Filter::ROTATION_EXPLICIT, Filter::ROTATION_IMPLICIT,
+         Filter::ROTATION_AS_RIGID_AS_POSSIBLE })
+  {
+    vtkNew<Filter> filter;
+    ReferenceEdits::Configure(edit, filter);
+    filter->SetRotationMode(mode);
+    filter->SetNumberOfIterations(5);
+    if (mode == Filter::ROTATION_AS_RIGID_AS_POSSIBLE)
+    {
+      filter->SetLaplacianWeightsToCotangent();
+    }
+    filter->SetHandleTransform(const_cast<vtkTransform*>(edit.Handle.Get()));
+    scene.Meshes.push_back(Edited(filter));
+  }
+  return scene;
+}
+
+Scene CactusModes(const std::string& data)
+{
+  ReferenceEdits::Edit edit;
+  if (!ReferenceEdits::LoadCactus(data, edit))
+  {
+    return Scene();
+  }
+  Scene scene = EveryMode(edit);
+  scene.ViewDirection[0] = 1.0, scene.ViewDirection[1] = 0.0, scene.ViewDirection[2] = 0.0;
+  return scene;
+}
+
+Scene TwistModes(const std::string& data)
+{
+  ReferenceEdits::Edit edit;
+  if (!ReferenceEdits::LoadTwist(data, edit))
+  {
+    return Scene();
+  }
+  Scene scene = EveryMode(edit);
+  scene.ViewDirection[0] = 0.0, scene.ViewDirection[1] = 0.0, scene.ViewDirection[2] = -1.0;
+  scene.ViewUp[0] = 0.0, scene.ViewUp[1] = 1.0, scene.ViewUp[2] = 0.0;
+  scene.FrameRegion = true;
+  return scene;
+}
+
 int main(int argc, char* argv[])
 {
   const std::map<std::string, std::function<Scene(const std::string&)>> cases = {
     { "BumpyPlaneEdit", BumpyPlaneEdit }, { "Fig6Rotations", Fig6Rotations },
-    { "Fig3Orders", Fig3Orders }, { "BunnyModes", BunnyModes }
+    { "Fig3Orders", Fig3Orders }, { "BunnyModes", BunnyModes }, { "CactusModes", CactusModes },
+    { "TwistModes", TwistModes }
   };
   if (argc < 3 || !cases.count(argv[1]))
   {
@@ -180,6 +232,10 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const Scene scene = cases.at(argv[1])(argv[2]);
+  if (scene.Meshes.empty())
+  {
+    return EXIT_FAILURE;
+  }
   std::vector<vtkPolyData*> meshes;
   for (const auto& mesh : scene.Meshes)
   {

@@ -1,0 +1,371 @@
+#include "AsRigidAsPossibleSolver.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace LaplacianEditing
+{
+namespace
+{
+// The rotation closest to A (the rotation of its polar decomposition), refined from `q` in place
+// (Mueller, Bender, Chentanez and Macklin, "A Robust Method to Extract the Rotational Part of
+// Deformations", MIG 2016). Each step lowers the local energy, and the rotation is warm-started
+// from the last iteration's, so a few steps per local step reach the same fixed point as an
+// exact SVD at a fraction of its cost.
+Eigen::Matrix3d ClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q)
+{
+  for (int step = 0; step < 4; ++step)
+  {
+    const Eigen::Matrix3d r = q.toRotationMatrix();
+    const Vector3 omega = (r.col(0).cross(a.col(0)) + r.col(1).cross(a.col(1)) +
+                            r.col(2).cross(a.col(2))) /
+      (std::abs(r.col(0).dot(a.col(0)) + r.col(1).dot(a.col(1)) + r.col(2).dot(a.col(2))) + 1e-12);
+    if (omega.squaredNorm() < 1e-20)
+    {
+      break;
+    }
+    // The rotation by omega, to first order: the iteration converges all the same.
+    q = Eigen::Quaterniond(1.0, 0.5 * omega.x(), 0.5 * omega.y(), 0.5 * omega.z()) * q;
+    q.normalize();
+  }
+  return q.toRotationMatrix();
+}
+
+Vector3 Apply(const AffineMap& map, const Vector3& p)
+{
+  return map.leftCols<3>() * p + map.col(3);
+}
+}
+
+std::string AsRigidAsPossibleSolver::Build(
+  const SurfaceMesh& mesh, const EditRegion& region, const DeformationOptions& options)
+{
+  const int n = region.GetNumberOfVertices();
+  this->NumberOfROIVertices = n;
+  this->HandleGroups = region.HandleGroups;
+  // The patch: the ROI, its ring (the rest of the energy vertices), and the ring's ring.
+  std::vector<int> patchVertices = region.Vertices;
+  std::vector<int> patchRow(mesh.GetNumberOfVertices(), -1);
+  for (int k = 0; k < n; ++k)
+  {
+    patchRow[region.Vertices[k]] = k;
+  }
+  auto grow = [&](int begin, int end) {
+    for (int k = begin; k < end; ++k)
+    {
+      const int v = patchVertices[k];
+      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+      {
+        if (patchRow[*w] < 0)
+        {
+          patchRow[*w] = static_cast<int>(patchVertices.size());
+          patchVertices.push_back(*w);
+        }
+      }
+    }
+  };
+  grow(0, n);
+  this->NumberOfEnergyVertices = static_cast<int>(patchVertices.size());
+  grow(n, this->NumberOfEnergyVertices);
+  const int patchSize = static_cast<int>(patchVertices.size());
+  this->RestPatch.resize(patchSize, 3);
+  for (int k = 0; k < patchSize; ++k)
+  {
+    this->RestPatch.row(k) = mesh.GetPositions()[patchVertices[k]].transpose();
+  }
+
+  // Symmetric weights: each edge's two one-sided weights averaged.
+  const LaplacianOperator laplacian(mesh, options.Weights);
+  std::vector<std::vector<double>> oneSided(patchSize);
+  auto weightsOf = [&](int row) -> const std::vector<double>& {
+    if (oneSided[row].empty())
+    {
+      oneSided[row] = laplacian.EdgeWeights(patchVertices[row]);
+    }
+    return oneSided[row];
+  };
+  this->Offsets.assign(1, 0);
+  this->Neighbors.clear();
+  this->Weights.clear();
+  this->RestEdges.clear();
+  this->RestScale = 0.0;
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    const int v = patchVertices[i];
+    const int* ring = mesh.NeighborsBegin(v);
+    for (int k = 0; k < mesh.GetValence(v); ++k)
+    {
+      const int j = patchRow[ring[k]];
+      const int* back = mesh.NeighborsBegin(ring[k]);
+      const int slot = static_cast<int>(std::lower_bound(back, mesh.NeighborsEnd(ring[k]), v) - back);
+      const double w = 0.5 * (weightsOf(i)[k] + weightsOf(j)[slot]);
+      this->Neighbors.push_back(j);
+      this->Weights.push_back(w);
+      this->RestEdges.push_back((this->RestPatch.row(i) - this->RestPatch.row(j)).transpose());
+      this->RestScale += w * (this->RestPatch.row(i) - this->RestPatch.row(j)).squaredNorm();
+    }
+    this->Offsets.push_back(static_cast<int>(this->Neighbors.size()));
+  }
+
+  // Unknowns: the ROI without its handles.
+  this->FreeRows.clear();
+  this->UnknownOfPatch.assign(patchSize, -1);
+  for (int k = 0; k < n; ++k)
+  {
+    if (region.Roles[k] != VertexRole::Handle)
+    {
+      this->UnknownOfPatch[k] = static_cast<int>(this->FreeRows.size());
+      this->FreeRows.push_back(k);
+    }
+  }
+  // Every connected part of the unknowns must reach a known value, or nothing holds it.
+  std::vector<char> held(this->FreeRows.size(), 0);
+  std::vector<int> stack;
+  for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
+  {
+    const int i = this->FreeRows[u];
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1] && !held[u]; ++k)
+    {
+      if (this->UnknownOfPatch[this->Neighbors[k]] < 0)
+      {
+        held[u] = 1;
+        stack.push_back(static_cast<int>(u));
+      }
+    }
+  }
+  while (!stack.empty())
+  {
+    const int i = this->FreeRows[stack.back()];
+    stack.pop_back();
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+    {
+      const int u = this->UnknownOfPatch[this->Neighbors[k]];
+      if (u >= 0 && !held[u])
+      {
+        held[u] = 1;
+        stack.push_back(u);
+      }
+    }
+  }
+  if (std::find(held.begin(), held.end(), 0) != held.end())
+  {
+    return "in the as-rigid-as-possible mode every connected part of the region of interest must "
+           "touch a handle or the fixed part: make the ROI smaller than its component";
+  }
+
+  const int free = static_cast<int>(this->FreeRows.size());
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int u = 0; u < free; ++u)
+  {
+    const int i = this->FreeRows[u];
+    double diagonal = 0.0;
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+    {
+      diagonal += this->Weights[k];
+      const int other = this->UnknownOfPatch[this->Neighbors[k]];
+      if (other >= 0 && other < u)
+      {
+        triplets.emplace_back(u, other, -this->Weights[k]);
+      }
+    }
+    triplets.emplace_back(u, u, diagonal);
+  }
+  Eigen::SparseMatrix<double> laplacianMatrix(free, free);
+  laplacianMatrix.setFromTriplets(triplets.begin(), triplets.end());
+  return free == 0 ? std::string()
+                   : this->Factor.Factorize(laplacianMatrix, options.Backend, options.Ordering,
+                       options.MaximumFactorBytes);
+}
+
+std::vector<Vector3> AsRigidAsPossibleSolver::Patch(const Positions& roiPositions) const
+{
+  std::vector<Vector3> patch(this->RestPatch.rows());
+  for (Eigen::Index k = 0; k < this->RestPatch.rows(); ++k)
+  {
+    patch[k] = (k < this->NumberOfROIVertices ? roiPositions.row(k) : this->RestPatch.row(k)).transpose();
+  }
+  return patch;
+}
+
+double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
+  std::vector<Eigen::Matrix3d>& rotations, Quaternions& quaternions, const ParallelFor& loop) const
+{
+  rotations.resize(this->NumberOfEnergyVertices);
+  quaternions.resize(this->NumberOfEnergyVertices, Eigen::Quaterniond::Identity());
+  std::vector<double> residuals(this->NumberOfEnergyVertices, 0.0);
+  loop(0, this->NumberOfEnergyVertices, [&](int first, int last) {
+    for (int i = first; i < last; ++i)
+    {
+      // The covariance sum w e e'^T is S^T for the deformation S mapping e to e'.
+      Eigen::Matrix3d deformation = Eigen::Matrix3d::Zero();
+      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      {
+        deformation.noalias() +=
+          this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
+      }
+      rotations[i] = ClosestRotation(deformation, quaternions[i]);
+      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      {
+        residuals[i] += this->Weights[k] *
+          (patch[i] - patch[this->Neighbors[k]] - rotations[i] * this->RestEdges[k]).squaredNorm();
+      }
+    }
+  });
+  double energy = 0.0;
+  for (double r : residuals)
+  {
+    energy += r;
+  }
+  return this->RestScale > 0.0 ? energy / this->RestScale : 0.0;
+}
+
+Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3d>& rotations,
+  const std::vector<Vector3>& patch, const ParallelFor& loop) const
+{
+  const int free = static_cast<int>(this->FreeRows.size());
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rhs(free, 3);
+  loop(0, free, [&](int first, int last) {
+    for (int u = first; u < last; ++u)
+    {
+      const int i = this->FreeRows[u];
+      Vector3 b = Vector3::Zero();
+      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      {
+        const int j = this->Neighbors[k];
+        b.noalias() += (0.5 * this->Weights[k]) * ((rotations[i] + rotations[j]) * this->RestEdges[k]);
+        if (this->UnknownOfPatch[j] < 0)
+        {
+          b += this->Weights[k] * patch[j];
+        }
+      }
+      rhs.row(u) = b.transpose();
+    }
+  });
+  return this->Factor.Solve(rhs);
+}
+
+Positions AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
+{
+  Positions roi = this->RestPatch.topRows(this->NumberOfROIVertices);
+  ArapOptions none;
+  none.MaximumIterations = 0;
+  this->Solve(handleMaps, roi, none);
+  const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
+  const Eigen::MatrixXd free = this->FreeRows.empty() ? Eigen::MatrixXd() : this->Global(identities, this->Patch(roi), SerialFor);
+  for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
+  {
+    roi.row(this->FreeRows[u]) = free.row(u);
+  }
+  return roi;
+}
+
+ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMaps,
+  Positions& roiPositions, const ArapOptions& options, const ParallelFor& loop,
+  std::vector<double>* energies) const
+{
+  for (int k = 0; k < this->NumberOfROIVertices; ++k)
+  {
+    const int group = this->HandleGroups[k];
+    if (group >= 0)
+    {
+      const Vector3 rest = this->RestPatch.row(k).transpose();
+      roiPositions.row(k) = (group < static_cast<int>(handleMaps.size())
+          ? Apply(handleMaps[group], rest) : rest).transpose();
+    }
+  }
+  ArapResult result;
+  const int free = static_cast<int>(this->FreeRows.size());
+  auto freeOf = [&](const Positions& roi) {
+    Eigen::MatrixXd x(free, 3);
+    for (int u = 0; u < free; ++u)
+    {
+      x.row(u) = roi.row(this->FreeRows[u]);
+    }
+    return x;
+  };
+  auto setFree = [&](Positions& roi, const Eigen::MatrixXd& x) {
+    for (int u = 0; u < free; ++u)
+    {
+      roi.row(this->FreeRows[u]) = x.row(u);
+    }
+  };
+  std::vector<Eigen::Matrix3d> rotations;
+  Quaternions quaternions;
+  result.Energy = this->Rotate(this->Patch(roiPositions), rotations, quaternions, loop);
+  if (free == 0 || options.MaximumIterations <= 0)
+  {
+    return result;
+  }
+  // Anderson acceleration on the fixed point x -> Global(Local(x)), over flattened positions.
+  const int m = std::max(options.History, 1);
+  std::vector<Eigen::VectorXd> gDifferences, fDifferences;
+  Eigen::VectorXd previousG, previousF;
+  Eigen::MatrixXd x = freeOf(roiPositions);
+  for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
+  {
+    const Eigen::MatrixXd g = this->Global(rotations, this->Patch(roiPositions), loop);
+    const Eigen::VectorXd gFlat = Eigen::Map<const Eigen::VectorXd>(g.data(), g.size());
+    const Eigen::VectorXd fFlat = gFlat - Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
+    Eigen::MatrixXd next = g;
+    const bool accelerated = options.Accelerate && previousG.size() == gFlat.size();
+    if (accelerated)
+    {
+      gDifferences.push_back(gFlat - previousG);
+      fDifferences.push_back(fFlat - previousF);
+      if (static_cast<int>(gDifferences.size()) > m)
+      {
+        gDifferences.erase(gDifferences.begin());
+        fDifferences.erase(fDifferences.begin());
+      }
+      const int h = static_cast<int>(fDifferences.size());
+      Eigen::MatrixXd dF(fFlat.size(), h), dG(gFlat.size(), h);
+      for (int c = 0; c < h; ++c)
+      {
+        dF.col(c) = fDifferences[c];
+        dG.col(c) = gDifferences[c];
+      }
+      const Eigen::VectorXd theta = dF.colPivHouseholderQr().solve(fFlat);
+      const Eigen::VectorXd mixed = gFlat - dG * theta;
+      next = Eigen::Map<const Eigen::MatrixXd>(mixed.data(), free, 3);
+    }
+    previousG = gFlat;
+    previousF = fFlat;
+
+    Positions candidate = roiPositions;
+    setFree(candidate, next);
+    std::vector<Eigen::Matrix3d> candidateRotations;
+    Quaternions candidateQuaternions = quaternions;
+    double energy =
+      this->Rotate(this->Patch(candidate), candidateRotations, candidateQuaternions, loop);
+    if (energy > result.Energy && accelerated)
+    {
+      // The accelerated iterate did not lower the energy: take the plain one, start over.
+      next = g;
+      setFree(candidate, next);
+      candidateQuaternions = quaternions;
+      energy = this->Rotate(this->Patch(candidate), candidateRotations, candidateQuaternions, loop);
+      gDifferences.clear();
+      fDifferences.clear();
+    }
+    const double decrease = result.Energy - energy;
+    roiPositions = candidate;
+    rotations.swap(candidateRotations);
+    quaternions.swap(candidateQuaternions);
+    x = next;
+    result.Energy = energy;
+    ++result.Iterations;
+    if (energies)
+    {
+      energies->push_back(energy);
+    }
+    if (decrease <= options.Tolerance * energy)
+    {
+      result.Converged = true;
+      break;
+    }
+  }
+  return result;
+}
+}

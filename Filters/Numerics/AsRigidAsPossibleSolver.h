@@ -1,0 +1,98 @@
+// As-rigid-as-possible editing (Sorkine and Alexa, "As-Rigid-As-Possible Surface Modeling",
+// SGP 2007), the local-global iteration, accelerated (Peng et al., "Anderson Acceleration for
+// Geometry Optimization and Physics Simulation", SIGGRAPH 2018).
+//
+// Energy: sum_i sum_j w_ij |(v'_i - v'_j) - R_i (v_i - v_j)|^2 over the ROI and the ring of fixed
+// vertices around it, with symmetric uniform or clamped cotangent weights.
+//  - Local step: each R_i is the rotation closest to the ring's covariance (a 3 x 3 SVD), in
+//    parallel through the injected ParallelFor.
+//  - Global step: the square system L_ff x_f = b over the free vertices (the ROI without its
+//    handles), with the handles at their targets and the vertices outside the ROI at rest as hard
+//    values. L_ff is the weighted graph Laplacian, about 7 nonzeros a row against the normal
+//    equations' 19, factored once per region.
+//  - Anderson acceleration mixes the last few iterates; an accelerated iterate whose energy does
+//    not fall is replaced by the plain one, so the energy never rises.
+// The anchors of the paper's soft constraints play no part: ARAP is held by the fixed ring.
+#ifndef LaplacianEditing_AsRigidAsPossibleSolver_h
+#define LaplacianEditing_AsRigidAsPossibleSolver_h
+
+#include "DeformationSystem.h"
+#include "ParallelFor.h"
+
+#include <Eigen/Geometry>
+
+#include <string>
+#include <vector>
+
+namespace LaplacianEditing
+{
+struct ArapOptions
+{
+  /// Local-global iterations at most per solve.
+  int MaximumIterations = 20;
+  /// Stop when an iteration lowers the energy by less than this fraction of it.
+  double Tolerance = 1e-3;
+  /// Anderson acceleration, and how many past iterates it mixes.
+  bool Accelerate = true;
+  int History = 5;
+};
+
+struct ArapResult
+{
+  int Iterations = 0;
+  double Energy = 0.0;
+  bool Converged = false;
+};
+
+class AsRigidAsPossibleSolver
+{
+public:
+  /// Assembles and factors L_ff. Returns an error message, empty on success.
+  std::string Build(const SurfaceMesh& mesh, const EditRegion& region, const DeformationOptions& options);
+
+  /// The ROI positions (rows follow region.Vertices) after iterating from `roiPositions`, whose
+  /// handle rows are first set to their targets. `energies`, if given, receives the energy
+  /// after each iteration.
+  ArapResult Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions,
+    const ArapOptions& options, const ParallelFor& loop = SerialFor,
+    std::vector<double>* energies = nullptr) const;
+
+  /// One global step with every rotation the identity: the start of a first solve (the
+  /// reconstruction from the rest edges, as the none mode with hard constraints).
+  Positions InitialGuess(const std::vector<AffineMap>& handleMaps) const;
+
+  const SparseCholesky& GetFactor() const { return this->Factor; }
+
+private:
+  // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
+  std::vector<Vector3> Patch(const Positions& roiPositions) const;
+  // The local step: rotations of the energy vertices, refined from `quaternions` (identity
+  // where empty), and the energy. Returns the energy.
+  using Quaternions = std::vector<Eigen::Quaterniond, Eigen::aligned_allocator<Eigen::Quaterniond>>;
+  double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
+    Quaternions& quaternions, const ParallelFor& loop) const;
+  // The global step: new free positions for the rotations.
+  Eigen::MatrixXd Global(const std::vector<Eigen::Matrix3d>& rotations,
+    const std::vector<Vector3>& patch, const ParallelFor& loop) const;
+
+  int NumberOfROIVertices = 0;
+  // Patch vertices: ROI rows first, then the rest; their rest positions.
+  Positions RestPatch;
+  // The energy vertices (ROI and ring, as patch rows), each with its CSR neighbours (patch
+  // rows) and symmetric weights.
+  int NumberOfEnergyVertices = 0;
+  std::vector<int> Offsets;
+  std::vector<int> Neighbors;
+  std::vector<double> Weights;
+  std::vector<Vector3> RestEdges; // rest position of the vertex minus its neighbour's
+  double RestScale = 0.0;
+  // Free unknowns: their ROI rows, and the unknown index of each patch row (-1 if known).
+  std::vector<int> FreeRows;
+  std::vector<int> UnknownOfPatch;
+  // Per ROI row: its handle group, -1 for others.
+  std::vector<int> HandleGroups;
+  SparseCholesky Factor;
+};
+}
+
+#endif

@@ -1,0 +1,308 @@
+// The as-rigid-as-possible solver, without VTK: against an independent reference, on rigid
+// motions, and for the monotone, accelerated iteration.
+#include "NumericsTestMeshes.h"
+
+#include "AsRigidAsPossibleSolver.h"
+#include "EditRegion.h"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace LaplacianEditing;
+using namespace LaplacianEditing::Testing;
+
+namespace
+{
+// A closed-ended tube along z: `rings` circles of `sides` vertices, radius 0.2, length 1.
+SurfaceMesh MakeTube(int sides, int rings)
+{
+  std::vector<Vector3> points;
+  const double pi = std::acos(-1.0);
+  for (int r = 0; r < rings; ++r)
+  {
+    for (int s = 0; s < sides; ++s)
+    {
+      const double angle = 2.0 * pi * s / sides;
+      points.emplace_back(0.2 * std::cos(angle), 0.2 * std::sin(angle), static_cast<double>(r) / (rings - 1));
+    }
+  }
+  std::vector<std::int64_t> offsets(1, 0), connectivity;
+  for (int r = 0; r + 1 < rings; ++r)
+  {
+    for (int s = 0; s < sides; ++s)
+    {
+      const std::int64_t a = r * sides + s, b = r * sides + (s + 1) % sides;
+      connectivity.insert(connectivity.end(), { a, b, b + sides, a + sides });
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    }
+  }
+  return SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+}
+
+// The tube's lowest rings fixed, its top rings the handle, the rest the ROI.
+struct TubeEdit
+{
+  SurfaceMesh Mesh = MakeTube(16, 24);
+  EditRegion Region;
+  AsRigidAsPossibleSolver Solver;
+
+  explicit TubeEdit(LaplacianWeights weights = LaplacianWeights::Cotangent)
+  {
+    std::vector<int> labels(this->Mesh.GetNumberOfVertices());
+    for (int v = 0; v < this->Mesh.GetNumberOfVertices(); ++v)
+    {
+      const double z = this->Mesh.GetPositions()[v].z();
+      labels[v] = z < 0.1 ? 0 : (z > 0.9 ? 2 : 1);
+    }
+    EXPECT_EQ(SelectLabeledRegion(this->Mesh, labels, 0.0, this->Region), "");
+    DeformationOptions options;
+    options.Weights = weights;
+    EXPECT_EQ(this->Solver.Build(this->Mesh, this->Region, options), "");
+  }
+
+  Positions Rest() const
+  {
+    Positions rest(this->Region.GetNumberOfVertices(), 3);
+    for (int k = 0; k < rest.rows(); ++k)
+    {
+      rest.row(k) = this->Mesh.GetPositions()[this->Region.Vertices[k]].transpose();
+    }
+    return rest;
+  }
+};
+
+// A turn of `degrees` about the tube's axis through its top.
+AffineMap Twist(double degrees)
+{
+  const Eigen::Matrix3d rotation =
+    Eigen::AngleAxisd(degrees * std::acos(-1.0) / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  AffineMap map;
+  map.leftCols<3>() = rotation;
+  map.col(3) = Vector3::Zero();
+  return map;
+}
+
+// An independent ARAP in plain Eigen: dense matrices, one-sided uniform weights (every
+// neighbour 1), SVD rotations for the ROI and its ring, the handles and the vertices outside
+// the ROI as known values.
+Positions ReferenceArap(const SurfaceMesh& mesh, const EditRegion& region, const AffineMap& map, int iterations)
+{
+  const int nv = mesh.GetNumberOfVertices();
+  const auto& rest = mesh.GetPositions();
+  std::vector<int> unknown(nv, -1), roiRow(nv, -1);
+  std::vector<Vector3> x(rest.begin(), rest.end());
+  int n = 0;
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
+  {
+    const int v = region.Vertices[k];
+    roiRow[v] = k;
+    if (region.HandleGroups[k] >= 0)
+    {
+      x[v] = map.leftCols<3>() * rest[v] + map.col(3);
+    }
+    else
+    {
+      unknown[v] = n++;
+    }
+  }
+  std::vector<char> energyVertex(nv, 0);
+  for (int v : region.Vertices)
+  {
+    energyVertex[v] = 1;
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+    {
+      energyVertex[*w] = 1;
+    }
+  }
+  Eigen::MatrixXd system = Eigen::MatrixXd::Zero(n, n);
+  for (int v = 0; v < nv; ++v)
+  {
+    if (unknown[v] < 0)
+    {
+      continue;
+    }
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+    {
+      system(unknown[v], unknown[v]) += 1.0;
+      if (unknown[*w] >= 0)
+      {
+        system(unknown[v], unknown[*w]) -= 1.0;
+      }
+    }
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> factor(system);
+  std::vector<Eigen::Matrix3d> rotation(nv, Eigen::Matrix3d::Identity());
+  for (int iteration = 0; iteration < iterations; ++iteration)
+  {
+    for (int v = 0; v < nv; ++v)
+    {
+      if (!energyVertex[v])
+      {
+        continue;
+      }
+      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+      {
+        covariance += (rest[v] - rest[*w]) * (x[v] - x[*w]).transpose();
+      }
+      Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      Eigen::Matrix3d u = svd.matrixU();
+      if ((svd.matrixV() * u.transpose()).determinant() < 0.0)
+      {
+        u.col(2) *= -1.0;
+      }
+      rotation[v] = svd.matrixV() * u.transpose();
+    }
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 3);
+    for (int v = 0; v < nv; ++v)
+    {
+      if (unknown[v] < 0)
+      {
+        continue;
+      }
+      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+      {
+        Vector3 term = 0.5 * (rotation[v] + rotation[*w]) * (rest[v] - rest[*w]);
+        if (unknown[*w] < 0)
+        {
+          term += x[*w];
+        }
+        rhs.row(unknown[v]) += term.transpose();
+      }
+    }
+    const Eigen::MatrixXd solution = factor.solve(rhs);
+    for (int v = 0; v < nv; ++v)
+    {
+      if (unknown[v] >= 0)
+      {
+        x[v] = solution.row(unknown[v]).transpose();
+      }
+    }
+  }
+  Positions result(region.GetNumberOfVertices(), 3);
+  for (int k = 0; k < result.rows(); ++k)
+  {
+    result.row(k) = x[region.Vertices[k]].transpose();
+  }
+  return result;
+}
+}
+
+TEST(AsRigidAsPossible, NothingMovedReproducesTheRest)
+{
+  TubeEdit edit;
+  Positions result = edit.Solver.InitialGuess({ AffineMap::Identity() });
+  ArapOptions options;
+  const ArapResult run = edit.Solver.Solve({ AffineMap::Identity() }, result, options);
+  EXPECT_LT((result - edit.Rest()).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT(run.Energy, 1e-20);
+}
+
+TEST(AsRigidAsPossible, MatchesAnIndependentReference)
+{
+  // Uniform weights on both sides, a 60-degree twist, both run to convergence: required to
+  // agree within 1e-6 (the tube is about 1 long).
+  TubeEdit edit(LaplacianWeights::Uniform);
+  const AffineMap twist = Twist(60.0);
+  Positions result = edit.Solver.InitialGuess({ twist });
+  ArapOptions options;
+  options.MaximumIterations = 2000;
+  options.Tolerance = 0.0;
+  options.Accelerate = false;
+  const ArapResult run = edit.Solver.Solve({ twist }, result, options);
+  const Positions reference = ReferenceArap(edit.Mesh, edit.Region, twist, 2000);
+  const double difference = (result - reference).cwiseAbs().maxCoeff();
+  std::printf("reference ARAP: %d iterations, energy %.6g, largest difference %.2e\n",
+    run.Iterations, run.Energy, difference);
+  EXPECT_LT(difference, 1e-6);
+}
+
+TEST(AsRigidAsPossible, RigidMotionsAreReproduced)
+{
+  // The handle and the fixed part both carried by one rigid motion: the region follows it
+  // exactly, required to 1e-8.
+  TubeEdit edit;
+  std::vector<int> labels(edit.Mesh.GetNumberOfVertices());
+  for (int v = 0; v < edit.Mesh.GetNumberOfVertices(); ++v)
+  {
+    const double z = edit.Mesh.GetPositions()[v].z();
+    labels[v] = z < 0.1 ? 3 : (z > 0.9 ? 2 : 1); // two handle groups, no fixed part
+  }
+  EditRegion region;
+  ASSERT_EQ(SelectLabeledRegion(edit.Mesh, labels, 0.0, region), "");
+  AsRigidAsPossibleSolver solver;
+  ASSERT_EQ(solver.Build(edit.Mesh, region, DeformationOptions()), "");
+  AffineMap rigid = Twist(0.0);
+  rigid.leftCols<3>() = Eigen::AngleAxisd(0.9, Vector3(1, 2, 3).normalized()).toRotationMatrix();
+  rigid.col(3) = Vector3(0.3, -0.2, 0.5);
+  const std::vector<AffineMap> maps = { rigid, rigid };
+  Positions result = solver.InitialGuess(maps);
+  ArapOptions options;
+  options.MaximumIterations = 500;
+  options.Tolerance = 0.0;
+  solver.Solve(maps, result, options);
+  double worst = 0.0;
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
+  {
+    const Vector3 expected = rigid.leftCols<3>() * edit.Mesh.GetPositions()[region.Vertices[k]] + rigid.col(3);
+    worst = std::max(worst, (result.row(k).transpose() - expected).norm());
+  }
+  std::printf("rigid motion reproduced to %.2e\n", worst);
+  EXPECT_LT(worst, 1e-8);
+}
+
+TEST(AsRigidAsPossible, EnergyFallsAndAccelerationCutsTheIterations)
+{
+  // A 120-degree twist. Required: the energy never rises, with or without acceleration, and
+  // acceleration reaches within 1% of the converged energy in at least twice fewer iterations.
+  TubeEdit edit;
+  const AffineMap twist = Twist(120.0);
+  int iterationsToReach[2] = { 0, 0 };
+  double converged = 0.0;
+  for (int accelerate = 1; accelerate >= 0; --accelerate)
+  {
+    Positions result = edit.Solver.InitialGuess({ twist });
+    ArapOptions options;
+    options.MaximumIterations = 3000;
+    options.Tolerance = 1e-9;
+    options.Accelerate = accelerate != 0;
+    std::vector<double> energies;
+    const ArapResult run = edit.Solver.Solve({ twist }, result, options, SerialFor, &energies);
+    converged = accelerate ? run.Energy : std::min(converged, run.Energy);
+    for (std::size_t k = 1; k < energies.size(); ++k)
+    {
+      EXPECT_LE(energies[k], energies[k - 1] * (1.0 + 1e-12)) << "iteration " << k;
+    }
+    for (std::size_t k = 0; k < energies.size(); ++k)
+    {
+      if (energies[k] <= 1.01 * converged)
+      {
+        iterationsToReach[accelerate] = static_cast<int>(k + 1);
+        break;
+      }
+    }
+  }
+  std::printf("within 1%% of converged energy %.5f: accelerated %d iterations, plain %d\n",
+    converged, iterationsToReach[1], iterationsToReach[0]);
+  EXPECT_GT(iterationsToReach[1], 0);
+  EXPECT_LE(2 * iterationsToReach[1], iterationsToReach[0]);
+}
+
+TEST(AsRigidAsPossible, HandlesLandOnTheirTargets)
+{
+  TubeEdit edit;
+  const AffineMap twist = Twist(90.0);
+  Positions result = edit.Solver.InitialGuess({ twist });
+  edit.Solver.Solve({ twist }, result, ArapOptions());
+  for (int k = 0; k < edit.Region.GetNumberOfVertices(); ++k)
+  {
+    if (edit.Region.HandleGroups[k] >= 0)
+    {
+      const Vector3 target = twist.leftCols<3>() * edit.Mesh.GetPositions()[edit.Region.Vertices[k]];
+      EXPECT_LT((result.row(k).transpose() - target).norm(), 1e-12);
+    }
+  }
+}
