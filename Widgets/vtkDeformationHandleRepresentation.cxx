@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellPicker.h"
+#include "vtkPickingManager.h"
 #include "vtkInteractorObserver.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -124,17 +125,31 @@ void vtkDeformationHandleRepresentation::GetCurrentCenter(double center[3])
   }
 }
 
-void vtkDeformationHandleRepresentation::PlaceWidget(double bounds[6])
+void vtkDeformationHandleRepresentation::PlaceWidget(double bds[6])
 {
-  double center[3], size = 0.0;
+  // As VTK's representations do: bounds scaled by PlaceFactor about their centre.
+  double bounds[6], center[3];
+  this->AdjustBounds(bds, bounds, center);
+  double size = 0.0;
   for (int i = 0; i < 3; ++i)
   {
-    center[i] = 0.5 * (bounds[2 * i] + bounds[2 * i + 1]);
+    this->InitialBounds[2 * i] = bounds[2 * i];
+    this->InitialBounds[2 * i + 1] = bounds[2 * i + 1];
     size = std::max(size, bounds[2 * i + 1] - bounds[2 * i]);
   }
+  this->InitialLength = std::sqrt(vtkMath::Distance2BetweenPoints(bounds, bounds + 3));
   this->HandleRadius = 0.05 * size;
   this->ROIRadius = 0.3 * size;
   this->SetCenter(center);
+}
+
+void vtkDeformationHandleRepresentation::RegisterPickers()
+{
+  if (vtkPickingManager* manager = this->GetPickingManager())
+  {
+    manager->AddPicker(this->HandlePicker, this);
+    manager->AddPicker(this->RingPicker, this);
+  }
 }
 
 void vtkDeformationHandleRepresentation::DisplayToViewPlane(double x, double y, double world[3])

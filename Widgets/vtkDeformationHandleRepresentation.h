@@ -105,7 +105,16 @@ public:
   ///@}
 
   // vtkWidgetRepresentation API
+  /**
+   * Centre the handle in `bounds` (scaled by PlaceFactor, as VTK's representations do), with
+   * radii of 0.05 and 0.3 of their largest side.
+   */
   void PlaceWidget(double bounds[6]) override;
+
+  /**
+   * The handle and ring pickers go through the picking manager where it is on.
+   */
+  void RegisterPickers() override;
   void BuildRepresentation() override;
   int ComputeInteractionState(int X, int Y, int modify = 0) override;
   void StartWidgetInteraction(double eventPosition[2]) override;

@@ -7,6 +7,7 @@
 #include "vtkCellPicker.h"
 #include "vtkCommand.h"
 #include "vtkDataSet.h"
+#include "vtkEvent.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
@@ -32,8 +33,15 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
 {
   this->Internals->SurfacePicker->SetTolerance(0.002);
   this->Internals->SurfacePicker->PickFromListOn();
-  this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonPressEvent, vtkWidgetEvent::Select,
-    this, vtkDeformationHandleWidget::SelectAction);
+  // Modifiers are bound here, in the event translator, so that applications can rebind them.
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonPressEvent, vtkEvent::NoModifier,
+    0, 0, nullptr, vtkWidgetEvent::Select, this, vtkDeformationHandleWidget::SelectAction);
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonPressEvent,
+    vtkEvent::ShiftModifier, 0, 0, nullptr, vtkWidgetEvent::Resize, this,
+    vtkDeformationHandleWidget::ResizeAction);
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonPressEvent,
+    vtkEvent::ControlModifier, 0, 0, nullptr, vtkWidgetEvent::Translate, this,
+    vtkDeformationHandleWidget::ConstrainedAction);
   this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonReleaseEvent,
     vtkWidgetEvent::EndSelect, this, vtkDeformationHandleWidget::EndSelectAction);
   this->CallbackMapper->SetCallbackMethod(
@@ -162,39 +170,52 @@ bool vtkDeformationHandleWidget::UndoCommit()
 
 void vtkDeformationHandleWidget::SelectAction(vtkAbstractWidget* widget)
 {
-  auto* self = static_cast<vtkDeformationHandleWidget*>(widget);
-  vtkDeformationHandleRepresentation* rep = self->GetDeformationHandleRepresentation();
-  const int x = self->Interactor->GetEventPosition()[0];
-  const int y = self->Interactor->GetEventPosition()[1];
-  self->CurrentRenderer = self->Interactor->FindPokedRenderer(x, y);
-  rep->SetRenderer(self->CurrentRenderer);
+  static_cast<vtkDeformationHandleWidget*>(widget)->BeginInteraction(false, false);
+}
+
+void vtkDeformationHandleWidget::ResizeAction(vtkAbstractWidget* widget)
+{
+  static_cast<vtkDeformationHandleWidget*>(widget)->BeginInteraction(true, false);
+}
+
+void vtkDeformationHandleWidget::ConstrainedAction(vtkAbstractWidget* widget)
+{
+  static_cast<vtkDeformationHandleWidget*>(widget)->BeginInteraction(false, true);
+}
+
+void vtkDeformationHandleWidget::BeginInteraction(bool resize, bool constrain)
+{
+  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+  const int x = this->Interactor->GetEventPosition()[0];
+  const int y = this->Interactor->GetEventPosition()[1];
+  this->CurrentRenderer = this->Interactor->FindPokedRenderer(x, y);
+  rep->SetRenderer(this->CurrentRenderer);
   const int state = rep->ComputeInteractionState(x, y);
-  const bool shift = self->Interactor->GetShiftKey() != 0;
   if (state == vtkDeformationHandleRepresentation::Outside)
   {
     double point[3];
-    if (!self->PickSurface(x, y, point))
+    if (!this->PickSurface(x, y, point))
     {
       return; // not ours: the interactor style gets the event
     }
-    self->EventCallbackCommand->SetAbortFlag(1);
-    self->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
-    self->PlaceHandle(point);
-    self->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
+    this->EventCallbackCommand->SetAbortFlag(1);
+    this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
+    this->PlaceHandle(point);
+    this->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
     return;
   }
   using Rep = vtkDeformationHandleRepresentation;
-  rep->SetInteractionState(state == Rep::OnHandle ? (shift ? Rep::ResizingROI : Rep::Translating)
-                                                  : (shift ? Rep::ResizingHandle : Rep::Rotating));
-  rep->SetConstrainToAxis(self->Interactor->GetControlKey() != 0);
+  rep->SetInteractionState(state == Rep::OnHandle ? (resize ? Rep::ResizingROI : Rep::Translating)
+                                                  : (resize ? Rep::ResizingHandle : Rep::Rotating));
+  rep->SetConstrainToAxis(constrain);
   double position[2] = { static_cast<double>(x), static_cast<double>(y) };
   rep->StartWidgetInteraction(position);
-  self->Interacting = true;
-  self->GrabFocus(self->EventCallbackCommand);
-  self->EventCallbackCommand->SetAbortFlag(1);
-  self->StartInteraction();
-  self->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
-  self->Render();
+  this->Interacting = true;
+  this->GrabFocus(this->EventCallbackCommand);
+  this->EventCallbackCommand->SetAbortFlag(1);
+  this->StartInteraction();
+  this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
+  this->Render();
 }
 
 void vtkDeformationHandleWidget::MoveAction(vtkAbstractWidget* widget)

@@ -8,12 +8,17 @@
  * during a drag. Only moving the handle re-solves; the radii reach the filter when a resize
  * ends, so the region is refactored once per resize.
  *
- * Default bindings (left button):
- * - press on the surface (SetSurfaceProp): put the handle on the picked vertex;
- * - drag the sphere: translate in the view plane; with Control, along one axis;
- * - drag the ring: rotate about the view direction;
- * - Shift + drag the sphere: resize the region of interest; Shift + drag the ring: resize the
- *   handle.
+ * Default bindings (left button), set in the event translator so that applications can rebind
+ * them (GetEventTranslator()->SetTranslation(...)):
+ * - vtkWidgetEvent::Select (press, no modifier): on the surface (SetSurfaceProp), put the
+ *   handle on the picked vertex; on the sphere, translate in the view plane; on the ring,
+ *   rotate about the view direction;
+ * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis;
+ * - vtkWidgetEvent::Resize (Shift + press): on the sphere, resize the region of interest; on the
+ *   ring, resize the handle;
+ * - vtkWidgetEvent::Move and EndSelect (mouse move, release).
+ * The representation registers its pickers with the picking manager, so the handle stays
+ * pickable in applications that turn the manager on.
  *
  * ResetHandle() undoes the current edit, CommitEdit() makes the edited surface the rest surface
  * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
@@ -81,6 +86,9 @@ protected:
   ~vtkDeformationHandleWidget() override;
 
   static void SelectAction(vtkAbstractWidget* widget);
+  static void ResizeAction(vtkAbstractWidget* widget);
+  static void ConstrainedAction(vtkAbstractWidget* widget);
+  void BeginInteraction(bool resize, bool constrain);
   static void MoveAction(vtkAbstractWidget* widget);
   static void EndSelectAction(vtkAbstractWidget* widget);
 

@@ -1,7 +1,8 @@
 // Drives vtkDeformationHandleWidget with recorded events, as VTK's BoxWidget2 test does: place
 // the handle by clicking the surface, drag it, turn it, resize the ROI, release. Checks the
 // handle transform and the filter's output numerically, the factorization count, and the final
-// frame against a baseline. A second case deletes the widget in the middle of a drag.
+// frame against a baseline. A second case deletes the widget in the middle of a drag; a third
+// drags with VTK's picking manager on.
 // Usage: TestDeformationHandleWidget <case> -V <baseline.png> -T <temp folder>
 #include "EditingScene.h"
 
@@ -13,6 +14,7 @@
 #include "vtkInteractorEventRecorder.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkMatrix4x4.h"
+#include "vtkPickingManager.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindowInteractor.h"
 
@@ -233,6 +235,28 @@ int PlaceDragRotateResize(int argc, char* argv[])
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int PickingManager()
+{
+  // An application with VTK's picking manager on: the handle must stay pickable, so its drag
+  // moves it and re-solves without refactoring.
+  Scene scene;
+  scene.Interactor->GetPickingManager()->EnabledOn();
+  auto widget = scene.MakeWidget();
+  vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
+  const int factorizations = scene.Filter->GetNumberOfFactorizations();
+  double current[3], at[2];
+  rep->GetCurrentCenter(current);
+  scene.Display(current, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 60.0 * t; }));
+  double moved[3];
+  rep->GetCurrentCenter(moved);
+  const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(current, moved));
+  std::cout << "with the picking manager on, the handle moved by " << distance << "\n";
+  Check(distance > 0.05, "the handle is picked and dragged through the picking manager");
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations, "the drag does not refactor");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -264,6 +288,10 @@ int main(int argc, char* argv[])
   {
     return DeleteMidInteraction();
   }
-  std::cerr << "usage: " << argv[0] << " PlaceDragRotateResize|DeleteMidInteraction [-V baseline -T temp]\n";
+  if (name == "PickingManager")
+  {
+    return PickingManager();
+  }
+  std::cerr << "usage: " << argv[0] << " PlaceDragRotateResize|DeleteMidInteraction|PickingManager [-V baseline -T temp]\n";
   return EXIT_FAILURE;
 }
