@@ -46,8 +46,23 @@ std::string vtkLaplacianSurfaceAdapter::Build(vtkPolyData* input, bool mergeCoin
   {
     points[i] = this->Normalize(input->GetPoint(i));
   }
-  std::vector<std::int64_t> offsets(1, 0);
-  std::vector<std::int64_t> connectivity;
+  std::vector<std::int64_t> offsets, connectivity;
+  vtkLaplacianSurfaceAdapter::GetPolygons(input, offsets, connectivity);
+  auto mesh = std::make_shared<le::SurfaceMesh>(
+    le::SurfaceMesh::FromPolygons(points, offsets, connectivity, mergeCoincidentPoints));
+  if (mesh->GetNumberOfTriangles() == 0)
+  {
+    return "The input polygons are all degenerate: no triangle has three distinct corners.";
+  }
+  this->Mesh = std::move(mesh);
+  return {};
+}
+
+void vtkLaplacianSurfaceAdapter::GetPolygons(
+  vtkPolyData* input, std::vector<std::int64_t>& offsets, std::vector<std::int64_t>& connectivity)
+{
+  offsets.assign(1, 0);
+  connectivity.clear();
   auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
   {
@@ -57,14 +72,6 @@ std::string vtkLaplacianSurfaceAdapter::Build(vtkPolyData* input, bool mergeCoin
     connectivity.insert(connectivity.end(), ids, ids + size);
     offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
   }
-  auto mesh = std::make_shared<le::SurfaceMesh>(
-    le::SurfaceMesh::FromPolygons(points, offsets, connectivity, mergeCoincidentPoints));
-  if (mesh->GetNumberOfTriangles() == 0)
-  {
-    return "The input polygons are all degenerate: no triangle has three distinct corners.";
-  }
-  this->Mesh = std::move(mesh);
-  return {};
 }
 
 le::Vector3 vtkLaplacianSurfaceAdapter::Normalize(const double p[3]) const

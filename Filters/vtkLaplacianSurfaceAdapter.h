@@ -15,6 +15,7 @@
 
 #include "vtkSmartPointer.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -34,6 +35,10 @@ public:
   std::string Build(vtkPolyData* input, bool mergeCoincidentPoints);
 
   std::shared_ptr<const LaplacianEditing::SurfaceMesh> GetMesh() const { return this->Mesh; }
+
+  /// The polygons of `input` as offsets and connectivity (SurfaceMesh::FromPolygons's input).
+  static void GetPolygons(
+    vtkPolyData* input, std::vector<std::int64_t>& offsets, std::vector<std::int64_t>& connectivity);
 
   /// Core units per input unit.
   double GetScale() const { return this->Scale; }

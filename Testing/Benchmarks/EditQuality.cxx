@@ -31,8 +31,8 @@
 #include "vtkTransform.h"
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
+#include "CGALSurface.h"
+
 #include <CGAL/Surface_mesh_deformation.h>
 #endif
 
@@ -107,30 +107,11 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
 std::string MeasureCGAL(
   const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured, double target)
 {
-  using Kernel = CGAL::Simple_cartesian<double>;
-  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-  using Vertex = Mesh::Vertex_index;
+  using namespace CGALSurface;
   using Deformation = CGAL::Surface_mesh_deformation<Mesh>;
 
   Mesh surface;
-  std::vector<Vertex> vertices;
-  for (const le::Vector3& p : ReferenceEdits::PointsOf(edit.Mesh))
-  {
-    vertices.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
-  }
-  auto cells = vtk::TakeSmartPointer(edit.Mesh->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    std::vector<Vertex> face;
-    for (vtkIdType c = 0; c < size; ++c)
-    {
-      face.push_back(vertices[ids[c]]);
-    }
-    surface.add_face(face);
-  }
+  const std::vector<Vertex> vertices = CGALSurface::Build(edit.Mesh, surface);
   Deformation deformation(surface);
   for (vtkIdType i = 0; i < edit.Labels->GetNumberOfTuples(); ++i)
   {

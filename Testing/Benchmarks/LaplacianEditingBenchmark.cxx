@@ -31,8 +31,8 @@
 #include "vtkTransform.h"
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
+#include "CGALSurface.h"
+
 #include <CGAL/Surface_mesh_deformation.h>
 #endif
 
@@ -287,32 +287,12 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
 // CGAL's SRE-ARAP on the same vertices, ROI and handle. Returns a JSON fragment.
 std::string MeasureCGAL(vtkPolyData* mesh, vtkDataArray* roles, const Options& options)
 {
-  using Kernel = CGAL::Simple_cartesian<double>;
-  using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-  using Vertex = Mesh::Vertex_index;
+  using namespace CGALSurface;
   using Deformation = CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, CGAL::SRE_ARAP>;
 
   Mesh surface;
-  std::vector<Vertex> vertices;
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    const double* p = mesh->GetPoint(i);
-    vertices.push_back(surface.add_vertex(Kernel::Point_3(p[0], p[1], p[2])));
-  }
   int skippedFaces = 0;
-  auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    std::vector<Vertex> face;
-    for (vtkIdType c = 0; c < size; ++c)
-    {
-      face.push_back(vertices[ids[c]]);
-    }
-    skippedFaces += surface.add_face(face) == Mesh::null_face() ? 1 : 0;
-  }
+  const std::vector<Vertex> vertices = CGALSurface::Build(mesh, surface, &skippedFaces);
 
   Deformation deformation(surface);
   std::vector<Vertex> handles;

@@ -12,6 +12,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cstdio>
 #include <vector>
 
@@ -131,20 +133,30 @@ TEST_P(RigidMotion, ExplicitRotationsReproduceIt)
   EXPECT_LT(byIterations[10], byIterations[3]); // the iteration converges
 }
 
+namespace
+{
+// The rigid error of the implicit mode in `formulation`, without and with the rescaling pass.
+std::array<double, 2> ImplicitRigidErrors(int formulation, double degrees)
+{
+  auto sphere = CappedSphere();
+  std::array<double, 2> errors;
+  for (int rescale = 0; rescale <= 1; ++rescale)
+  {
+    auto filter = ArrayEdit(sphere, Filter::ROTATION_IMPLICIT);
+    filter->SetImplicitFormulation(formulation);
+    filter->SetPreserveDetailScale(rescale);
+    errors[rescale] = RigidError(filter, sphere, degrees);
+  }
+  return errors;
+}
+}
+
 TEST_P(RigidMotion, ImplicitSimilaritiesReproduceSmallRotations)
 {
   // The linearized similarities are exact only to first order in the angle: required within
   // 3e-3 of the diagonal at 10 degrees (1e-3 with the rescaling pass); larger angles are reported.
   const double degrees = GetParam();
-  auto sphere = CappedSphere();
-  double errors[2];
-  for (int rescale = 0; rescale <= 1; ++rescale)
-  {
-    auto filter = ArrayEdit(sphere, Filter::ROTATION_IMPLICIT);
-    filter->SetImplicitFormulationToPaper();
-    filter->SetPreserveDetailScale(rescale);
-    errors[rescale] = RigidError(filter, sphere, degrees);
-  }
+  const auto errors = ImplicitRigidErrors(Filter::IMPLICIT_PAPER, degrees);
   std::printf("rigid %3.0f deg: implicit %.2e, implicit with rescaling %.2e\n", degrees,
     errors[0], errors[1]);
   if (degrees <= 10.0)
@@ -160,14 +172,7 @@ TEST_P(RigidMotion, ImplicitPerEdgeRotationsReproduceSmallRotations)
   // details by about 1 + angle^2 / 2: required within 6e-3 of the diagonal at 10 degrees
   // (measured 4.6e-3), and within 1e-3 with the rescaling pass, which removes that growth.
   const double degrees = GetParam();
-  auto sphere = CappedSphere();
-  double errors[2];
-  for (int rescale = 0; rescale <= 1; ++rescale)
-  {
-    auto filter = ArrayEdit(sphere, Filter::ROTATION_IMPLICIT);
-    filter->SetPreserveDetailScale(rescale);
-    errors[rescale] = RigidError(filter, sphere, degrees);
-  }
+  const auto errors = ImplicitRigidErrors(Filter::IMPLICIT_PER_EDGE, degrees);
   std::printf("rigid %3.0f deg: implicit per edge %.2e, with rescaling %.2e\n", degrees,
     errors[0], errors[1]);
   if (degrees <= 10.0)

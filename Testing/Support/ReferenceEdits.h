@@ -18,6 +18,7 @@
 #include "vtkDataArray.h"
 #include "vtkIntArray.h"
 #include "vtkLaplacianDeformationFilter.h"
+#include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTransform.h"
@@ -236,16 +237,8 @@ struct Measured
     {
       points[i] = le::Vector3(mesh->GetPoint(i));
     }
-    std::vector<std::int64_t> offsets(1, 0), connectivity;
-    auto cells = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      cells->GetCurrentCell(size, ids);
-      connectivity.insert(connectivity.end(), ids, ids + size);
-      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    }
+    std::vector<std::int64_t> offsets, connectivity;
+    vtkLaplacianSurfaceAdapter::GetPolygons(mesh, offsets, connectivity);
     this->Mesh = le::SurfaceMesh::FromPolygons(points, offsets, connectivity, false);
     for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)
     {
