@@ -30,13 +30,13 @@ set(force_static)
 if (LAPLACIAN_EDITING_PARAVIEW_PLUGIN)
   set(force_static FORCE_STATIC)
 endif ()
-vtk_module_add_module(LaplacianEditing::LaplacianEditing ${force_static}
+vtk_module_add_module(LaplacianEditing::Deformation ${force_static}
   CLASSES ${classes}
   SOURCES ${private_sources}
   PRIVATE_HEADERS ${private_headers})
-vtk_module_include(LaplacianEditing::LaplacianEditing
+vtk_module_include(LaplacianEditing::Deformation
   PUBLIC "$<BUILD_INTERFACE:${_le_root}/Filters>" "$<BUILD_INTERFACE:${_le_root}/Widgets>")
-vtk_module_link(LaplacianEditing::LaplacianEditing PRIVATE LaplacianEditing::Numerics)
+vtk_module_link(LaplacianEditing::Deformation PRIVATE LaplacianEditing::Numerics)
 if (COMMAND paraview_add_server_manager_xmls)
   paraview_add_server_manager_xmls(XMLS "${_le_root}/ParaView/Plugin/LaplacianDeformation.xml")
 endif ()

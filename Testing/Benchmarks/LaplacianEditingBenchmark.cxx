@@ -3,7 +3,7 @@
 //   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F]
 //     [--handle F] [--translate DX DY DZ] [--moves N] [--order 1|2]
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
-//     [--mode none|explicit|implicit] [--iterations K] [--rescale] [--compare-cgal]
+//     [--mode none|explicit|implicit|arap] [--iterations K] [--rescale] [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
 // scaling curve). --vertex largest picks the first vertex of the largest connected component.
@@ -188,7 +188,7 @@ bool Parse(int argc, char* argv[], Options& options)
     else if (arg == "--ordering")
       options.Ordering = pick(next(), { "auto", "amd", "metis", "nesdis" });
     else if (arg == "--mode")
-      options.Mode = pick(next(), { "none", "explicit", "implicit" });
+      options.Mode = pick(next(), { "none", "explicit", "implicit", "arap" });
     else if (arg == "--iterations")
       options.Iterations = std::atoi(next().c_str());
     else if (arg == "--rescale")
@@ -218,6 +218,10 @@ struct Measurement
   double Update = 0.0;
   bool Refactored = false;
   vtkSmartPointer<vtkPolyData> Output;
+  // As-rigid-as-possible mode: iterations per move, and the last move's energy over the energy
+  // converged at the same pose.
+  double ARAPIterations = 0.0;
+  double ARAPEnergyRatio = 0.0;
 
   std::string Json() const
   {
@@ -228,6 +232,11 @@ struct Measurement
          << ", \"factorization_seconds\": " << this->Factorization
          << ", \"move_median_seconds\": " << this->Move
          << ", \"update_median_seconds\": " << this->Update;
+    if (this->ARAPEnergyRatio > 0.0)
+    {
+      json << ", \"arap_median_iterations\": " << this->ARAPIterations
+           << ", \"arap_energy_over_converged\": " << this->ARAPEnergyRatio;
+    }
     return json.str();
   }
 };
@@ -265,7 +274,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   {
     return result;
   }
-  std::vector<double> moves, updates;
+  std::vector<double> moves, updates, iterations;
   for (int move = 1; move <= options.Moves; ++move)
   {
     const double s = diagonal * move / options.Moves;
@@ -275,10 +284,21 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     filter->Update();
     updates.push_back(SecondsSince(start));
     moves.push_back(filter->GetSolveTime());
+    iterations.push_back(filter->GetNumberOfARAPIterations());
   }
   result.Move = Median(moves);
   result.Update = Median(updates);
   result.Refactored = filter->GetNumberOfFactorizations() != factorizations;
+  if (mode == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE)
+  {
+    // The drag's last energy against the optimum at that pose (the drag's result, iterated on).
+    const double dragged = filter->GetARAPEnergy();
+    filter->SetARAPIterations(1000);
+    filter->SetConvergence(1e-8);
+    filter->Update();
+    result.ARAPIterations = Median(iterations);
+    result.ARAPEnergyRatio = filter->GetARAPEnergy() > 0.0 ? dragged / filter->GetARAPEnergy() : 1.0;
+  }
   result.Output = filter->GetOutput();
   return result;
 }
@@ -355,7 +375,7 @@ int main(int argc, char* argv[])
               << " MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F] [--handle F]"
                  " [--translate DX DY DZ] [--moves N] [--order 1|2] [--weights uniform|cotangent]"
                  " [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]"
-                 " [--mode none|explicit|implicit] [--iterations K] [--rescale] [--compare-cgal]\n";
+                 " [--mode none|explicit|implicit|arap] [--iterations K] [--rescale] [--compare-cgal]\n";
     return EXIT_FAILURE;
   }
   std::string error;
@@ -393,7 +413,7 @@ int main(int argc, char* argv[])
     weld->Update();
     mesh = weld->GetOutput();
   }
-  const char* modes[] = { "none", "explicit", "implicit" };
+  const char* modes[] = { "none", "explicit", "implicit", "arap" };
   const char* orderings[] = { "auto", "amd", "metis", "nesdis" };
   const Measurement main = Measure(mesh, options.Point, options, options.Mode, options.Iterations);
   if (!main.Output)
