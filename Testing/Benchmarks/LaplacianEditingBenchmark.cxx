@@ -274,7 +274,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   {
     return result;
   }
-  std::vector<double> moves, updates, iterations;
+  std::vector<double> moves, updates, arapIterations;
   for (int move = 1; move <= options.Moves; ++move)
   {
     const double s = diagonal * move / options.Moves;
@@ -284,7 +284,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     filter->Update();
     updates.push_back(SecondsSince(start));
     moves.push_back(filter->GetSolveTime());
-    iterations.push_back(filter->GetNumberOfARAPIterations());
+    arapIterations.push_back(filter->GetNumberOfARAPIterations());
   }
   result.Move = Median(moves);
   result.Update = Median(updates);
@@ -296,7 +296,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     filter->SetARAPIterations(1000);
     filter->SetConvergence(1e-8);
     filter->Update();
-    result.ARAPIterations = Median(iterations);
+    result.ARAPIterations = Median(arapIterations);
     result.ARAPEnergyRatio = filter->GetARAPEnergy() > 0.0 ? dragged / filter->GetARAPEnergy() : 1.0;
   }
   result.Output = filter->GetOutput();
