@@ -3,7 +3,8 @@
 //   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F]
 //     [--handle F] [--translate DX DY DZ] [--moves N] [--order 1|2]
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
-//     [--mode none|explicit|implicit|arap] [--iterations K] [--rescale] [--compare-cgal]
+//     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--rescale]
+//     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
 // scaling curve). --vertex largest picks the first vertex of the largest connected component.
@@ -143,6 +144,7 @@ struct Options
   int Iterations = 1;
   bool Rescale = false;
   bool CompareCGAL = false;
+  int ARAPIterations = 20;
 };
 
 bool Parse(int argc, char* argv[], Options& options)
@@ -191,6 +193,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.Mode = pick(next(), { "none", "explicit", "implicit", "arap" });
     else if (arg == "--iterations")
       options.Iterations = std::atoi(next().c_str());
+    else if (arg == "--arap-iterations")
+      options.ARAPIterations = std::atoi(next().c_str());
     else if (arg == "--rescale")
       options.Rescale = true;
     else if (arg == "--compare-cgal")
@@ -258,6 +262,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   filter->SetRotationMode(mode);
   filter->SetNumberOfIterations(iterations);
   filter->SetPreserveDetailScale(options.Rescale);
+  filter->SetARAPIterations(options.ARAPIterations);
   vtkNew<vtkTransform> transform;
   filter->SetHandleTransform(transform);
   filter->Update();
@@ -375,7 +380,8 @@ int main(int argc, char* argv[])
               << " MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F] [--handle F]"
                  " [--translate DX DY DZ] [--moves N] [--order 1|2] [--weights uniform|cotangent]"
                  " [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]"
-                 " [--mode none|explicit|implicit|arap] [--iterations K] [--rescale] [--compare-cgal]\n";
+                 " [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--rescale]"
+                 " [--compare-cgal]\n";
     return EXIT_FAILURE;
   }
   std::string error;
