@@ -16,16 +16,9 @@
  * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis;
  * - vtkWidgetEvent::Resize (Shift + press): on the sphere, resize the region of interest; on the
  *   ring, resize the handle;
- * - vtkWidgetEvent::Move and EndSelect (mouse move, release, any modifier).
- * For example, SetTranslation(vtkCommand::LeftButtonPressEvent, vtkEvent::AltModifier, 0, 0,
- * nullptr, vtkWidgetEvent::Resize) resizes with Alt too, and the same with vtkEvent::ShiftModifier
- * and vtkWidgetEvent::NoEvent frees Shift for the interactor style. Rebind before On(): the
- * widget observes the interactor's events when it is enabled.
- *
- * The widget (surface picker) and the representation (sphere and ring pickers) register their
- * pickers with the interactor's picking manager and pick through it, so the handle stays
- * pickable in applications that turn the manager on. vtkDeformationHandleRepresentation::
- * PlaceWidget(bounds) puts the handle in the centre of the bounds; the paired filter follows.
+ * - vtkWidgetEvent::Move and EndSelect (mouse move, release).
+ * The representation registers its pickers with the picking manager, so the handle stays
+ * pickable in applications that turn the manager on.
  *
  * ResetHandle() undoes the current edit, CommitEdit() makes the edited surface the rest surface
  * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
@@ -92,7 +85,6 @@ protected:
   vtkDeformationHandleWidget();
   ~vtkDeformationHandleWidget() override;
 
-  // The actions of vtkWidgetEvent::Select, Resize, Translate, Move and EndSelect.
   static void SelectAction(vtkAbstractWidget* widget);
   static void ResizeAction(vtkAbstractWidget* widget);
   static void ConstrainedAction(vtkAbstractWidget* widget);
@@ -100,15 +92,8 @@ protected:
   static void MoveAction(vtkAbstractWidget* widget);
   static void EndSelectAction(vtkAbstractWidget* widget);
 
-  /**
-   * Registers the surface picker with the picking manager (vtkInteractorObserver API).
-   */
-  void RegisterPickers() override;
-
   bool PickSurface(int x, int y, double point[3]);
   void PushToFilter();
-  // Pushes the representation's placement (vtkCommand::PlaceWidgetEvent) to the filter.
-  void ObserveRepresentation();
 
   vtkLaplacianDeformationFilter* DeformationFilter = nullptr;
   vtkProp* SurfaceProp = nullptr;

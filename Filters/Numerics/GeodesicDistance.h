@@ -15,7 +15,6 @@
 #include <array>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -41,6 +40,7 @@ public:
     , Method(method)
     , Distance(mesh.GetNumberOfVertices(), std::numeric_limits<double>::infinity())
     , Settled(mesh.GetNumberOfVertices(), 0)
+    , HeapSlot(mesh.GetNumberOfVertices(), -1)
   {
   }
 
@@ -78,14 +78,10 @@ public:
         }
       }
     }
-    while (!this->Queue.empty())
+    while (!this->Heap.empty())
     {
-      const auto [d, v] = this->Queue.top();
-      this->Queue.pop();
-      if (d > this->Distance[v] || this->Settled[v])
-      {
-        continue;
-      }
+      const int v = this->PopNearest();
+      const double d = this->Distance[v];
       this->Settled[v] = 1;
       visit(v, d);
       // Each unsettled neighbour's best arrival: along its edge, or across a triangle at v
@@ -135,6 +131,8 @@ public:
   }
 
 private:
+  // The frontier is an indexed binary heap on Distance: each vertex is in it at most once, and
+  // a shorter distance moves it up (fewer heap operations than re-pushing).
   void Reach(int v, double d)
   {
     if (this->Distance[v] == std::numeric_limits<double>::infinity())
@@ -142,16 +140,70 @@ private:
       this->Touched.push_back(v);
     }
     this->Distance[v] = d;
-    this->Queue.emplace(d, v);
+    if (this->HeapSlot[v] < 0)
+    {
+      this->HeapSlot[v] = static_cast<int>(this->Heap.size());
+      this->Heap.push_back(v);
+    }
+    this->SiftUp(this->HeapSlot[v]);
   }
 
-  using Entry = std::pair<double, int>;
+  int PopNearest()
+  {
+    const int nearest = this->Heap.front();
+    this->HeapSlot[nearest] = -1;
+    const int last = this->Heap.back();
+    this->Heap.pop_back();
+    if (!this->Heap.empty())
+    {
+      this->Heap[0] = last;
+      this->HeapSlot[last] = 0;
+      this->SiftDown(0);
+    }
+    return nearest;
+  }
+
+  void Place(int slot, int v)
+  {
+    this->Heap[slot] = v;
+    this->HeapSlot[v] = slot;
+  }
+
+  void SiftUp(int slot)
+  {
+    const int v = this->Heap[slot];
+    while (slot > 0 && this->Distance[this->Heap[(slot - 1) / 2]] > this->Distance[v])
+    {
+      this->Place(slot, this->Heap[(slot - 1) / 2]);
+      slot = (slot - 1) / 2;
+    }
+    this->Place(slot, v);
+  }
+
+  void SiftDown(int slot)
+  {
+    const int v = this->Heap[slot];
+    const int size = static_cast<int>(this->Heap.size());
+    for (int child = 2 * slot + 1; child < size; child = 2 * slot + 1)
+    {
+      child += child + 1 < size && this->Distance[this->Heap[child + 1]] < this->Distance[this->Heap[child]];
+      if (this->Distance[this->Heap[child]] >= this->Distance[v])
+      {
+        break;
+      }
+      this->Place(slot, this->Heap[child]);
+      slot = child;
+    }
+    this->Place(slot, v);
+  }
+
   const SurfaceMesh& Mesh;
   DistanceMethod Method;
   std::vector<double> Distance;
   std::vector<char> Settled;
   std::vector<int> Touched;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> Queue;
+  std::vector<int> Heap;
+  std::vector<int> HeapSlot;
 };
 
 /// Distances from a set of source vertices; vertices farther than `maxDistance`, or not
