@@ -3,11 +3,12 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellPicker.h"
-#include "vtkPickingManager.h"
+#include "vtkCommand.h"
 #include "vtkInteractorObserver.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkPickingManager.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
@@ -130,22 +131,28 @@ void vtkDeformationHandleRepresentation::PlaceWidget(double bds[6])
   // As VTK's representations do: bounds scaled by PlaceFactor about their centre.
   double bounds[6], center[3];
   this->AdjustBounds(bds, bounds, center);
-  double size = 0.0;
+  std::copy(bounds, bounds + 6, this->InitialBounds);
+  double size = 0.0, diagonal2 = 0.0;
   for (int i = 0; i < 3; ++i)
   {
-    this->InitialBounds[2 * i] = bounds[2 * i];
-    this->InitialBounds[2 * i + 1] = bounds[2 * i + 1];
-    size = std::max(size, bounds[2 * i + 1] - bounds[2 * i]);
+    const double side = bounds[2 * i + 1] - bounds[2 * i];
+    size = std::max(size, side);
+    diagonal2 += side * side;
   }
-  this->InitialLength = std::sqrt(vtkMath::Distance2BetweenPoints(bounds, bounds + 3));
-  this->HandleRadius = 0.05 * size;
-  this->ROIRadius = 0.3 * size;
+  this->InitialLength = std::sqrt(diagonal2);
+  this->SetHandleRadius(0.05 * size);
+  this->SetROIRadius(0.3 * size);
   this->SetCenter(center);
+  // The widget passes the new handle on to its filter.
+  this->InvokeEvent(vtkCommand::PlaceWidgetEvent, nullptr);
 }
 
 void vtkDeformationHandleRepresentation::RegisterPickers()
 {
-  if (vtkPickingManager* manager = this->GetPickingManager())
+  // Called by SetRenderer and SetPickingManaged of vtkWidgetRepresentation. Unmanaged pickers
+  // stay out of the manager, where they would compete with other widgets' picks.
+  vtkPickingManager* manager = this->GetPickingManager();
+  if (manager && this->PickingManaged)
   {
     manager->AddPicker(this->HandlePicker, this);
     manager->AddPicker(this->RingPicker, this);
@@ -362,4 +369,7 @@ void vtkDeformationHandleRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "HandleRadius: " << this->HandleRadius << "\n";
   os << indent << "ROIRadius: " << this->ROIRadius << "\n";
   os << indent << "ConstrainToAxis: " << this->ConstrainToAxis << "\n";
+  os << indent << "HandleProperty: " << this->HandleProperty << "\n";
+  os << indent << "SelectedHandleProperty: " << this->SelectedHandleProperty << "\n";
+  os << indent << "RingProperty: " << this->RingProperty << "\n";
 }

@@ -106,13 +106,16 @@ public:
 
   // vtkWidgetRepresentation API
   /**
-   * Centre the handle in `bounds` (scaled by PlaceFactor, as VTK's representations do), with
-   * radii of 0.05 and 0.3 of their largest side.
+   * Centre the handle in `bounds` (scaled about their centre by PlaceFactor, through
+   * AdjustBounds, as VTK's representations do), with radii of 0.05 and 0.3 of the largest side
+   * of the scaled bounds, and the identity transform. Fires vtkCommand::PlaceWidgetEvent, on
+   * which vtkDeformationHandleWidget passes the handle to its filter.
    */
   void PlaceWidget(double bounds[6]) override;
 
   /**
-   * The handle and ring pickers go through the picking manager where it is on.
+   * Registers the sphere and ring pickers with the interactor's picking manager;
+   * ComputeInteractionState picks through it (GetAssemblyPath) where it is enabled.
    */
   void RegisterPickers() override;
   void BuildRepresentation() override;

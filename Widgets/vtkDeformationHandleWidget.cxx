@@ -3,29 +3,32 @@
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkLaplacianDeformationFilter.h"
 
+#include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellPicker.h"
 #include "vtkCommand.h"
 #include "vtkDataSet.h"
 #include "vtkEvent.h"
 #include "vtkObjectFactory.h"
+#include "vtkPickingManager.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
+#include "vtkWeakPointer.h"
 #include "vtkWidgetCallbackMapper.h"
 #include "vtkWidgetEvent.h"
 
-#include <vector>
-
 vtkStandardNewMacro(vtkDeformationHandleWidget);
-vtkCxxSetObjectMacro(vtkDeformationHandleWidget, SurfaceProp, vtkProp);
 
 struct vtkDeformationHandleWidget::vtkInternals
 {
   vtkNew<vtkCellPicker> SurfacePicker;
+  // The representation whose PlaceWidgetEvent reaches the filter, and the observer's tag.
+  vtkWeakPointer<vtkWidgetRepresentation> ObservedRepresentation;
+  unsigned long PlaceObserver = 0;
 };
 
 vtkDeformationHandleWidget::vtkDeformationHandleWidget()
@@ -50,6 +53,10 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
 
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
 {
+  if (vtkWidgetRepresentation* observed = this->Internals->ObservedRepresentation)
+  {
+    observed->RemoveObserver(this->Internals->PlaceObserver);
+  }
   this->SetDeformationFilter(nullptr);
   this->SetSurfaceProp(nullptr);
 }
@@ -57,6 +64,7 @@ vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
 void vtkDeformationHandleWidget::SetRepresentation(vtkDeformationHandleRepresentation* representation)
 {
   this->Superclass::SetWidgetRepresentation(representation);
+  this->PairRepresentation();
 }
 
 vtkDeformationHandleRepresentation* vtkDeformationHandleWidget::GetDeformationHandleRepresentation()
@@ -69,6 +77,58 @@ void vtkDeformationHandleWidget::CreateDefaultRepresentation()
   if (!this->WidgetRep)
   {
     this->WidgetRep = vtkDeformationHandleRepresentation::New();
+  }
+}
+
+void vtkDeformationHandleWidget::PairRepresentation()
+{
+  vtkInternals& internals = *this->Internals;
+  if (internals.ObservedRepresentation != this->WidgetRep)
+  {
+    if (internals.ObservedRepresentation)
+    {
+      internals.ObservedRepresentation->RemoveObserver(internals.PlaceObserver);
+    }
+    internals.ObservedRepresentation = this->WidgetRep;
+    if (this->WidgetRep)
+    {
+      // rep->PlaceWidget(bounds) moves and sizes the handle: the filter must edit there too.
+      internals.PlaceObserver = this->WidgetRep->AddObserver(
+        vtkCommand::PlaceWidgetEvent, this, &vtkDeformationHandleWidget::PushToFilter);
+    }
+  }
+  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+  if (this->DeformationFilter && rep)
+  {
+    rep->SetCenter(this->DeformationFilter->GetHandleCenter());
+    rep->SetHandleRadius(this->DeformationFilter->GetHandleRadius());
+    rep->SetROIRadius(this->DeformationFilter->GetROIRadius());
+    this->DeformationFilter->SetHandleTransform(rep->GetTransform());
+  }
+}
+
+void vtkDeformationHandleWidget::SetSurfaceProp(vtkProp* prop)
+{
+  if (this->SurfaceProp == prop)
+  {
+    return;
+  }
+  vtkSetObjectBodyMacro(SurfaceProp, vtkProp, prop);
+  // The pick list is set here, not at the pick: the picking manager may run the picker itself.
+  vtkCellPicker* picker = this->Internals->SurfacePicker;
+  picker->InitializePickList();
+  if (prop)
+  {
+    picker->AddPickList(prop);
+  }
+}
+
+void vtkDeformationHandleWidget::RegisterPickers()
+{
+  vtkPickingManager* manager = this->GetPickingManager();
+  if (manager && this->PickingManaged)
+  {
+    manager->AddPicker(this->Internals->SurfacePicker, this);
   }
 }
 
@@ -87,11 +147,7 @@ void vtkDeformationHandleWidget::SetDeformationFilter(vtkLaplacianDeformationFil
   {
     filter->Register(this);
     this->CreateDefaultRepresentation();
-    vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
-    rep->SetCenter(filter->GetHandleCenter());
-    rep->SetHandleRadius(filter->GetHandleRadius());
-    rep->SetROIRadius(filter->GetROIRadius());
-    filter->SetHandleTransform(rep->GetTransform());
+    this->PairRepresentation();
   }
   this->Modified();
 }
@@ -114,10 +170,19 @@ bool vtkDeformationHandleWidget::PickSurface(int x, int y, double point[3])
     return false;
   }
   vtkCellPicker* picker = this->Internals->SurfacePicker;
-  picker->InitializePickList();
-  picker->AddPickList(this->SurfaceProp);
-  picker->Pick(x, y, 0.0, this->CurrentRenderer);
-  if (!picker->GetPath() || picker->GetPointId() < 0)
+  // Through the picking manager where it is on, so that the handle in front of the surface
+  // wins. (vtkInteractorObserver::GetAssemblyPath does not check PickingManaged.)
+  vtkAssemblyPath* path = nullptr;
+  if (this->PickingManaged)
+  {
+    path = this->GetAssemblyPath(x, y, 0.0, picker);
+  }
+  else
+  {
+    picker->Pick(x, y, 0.0, this->CurrentRenderer);
+    path = picker->GetPath();
+  }
+  if (!path || picker->GetPointId() < 0)
   {
     return false;
   }
@@ -263,4 +328,5 @@ void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DeformationFilter: " << this->DeformationFilter << "\n";
   os << indent << "SurfaceProp: " << this->SurfaceProp << "\n";
+  os << indent << "Interacting: " << this->Interacting << "\n";
 }

@@ -16,9 +16,22 @@
  * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis;
  * - vtkWidgetEvent::Resize (Shift + press): on the sphere, resize the region of interest; on the
  *   ring, resize the handle;
- * - vtkWidgetEvent::Move and EndSelect (mouse move, release).
- * The representation registers its pickers with the picking manager, so the handle stays
- * pickable in applications that turn the manager on.
+ * - vtkWidgetEvent::Move and EndSelect (mouse move, release, any modifier).
+ * SetTranslation adds a binding and the first that matches wins, so remove one before binding
+ * its event anew. For example, Control + drag resizes instead of translating along one axis after
+ * @code
+ * vtkWidgetEventTranslator* translator = widget->GetEventTranslator();
+ * translator->RemoveTranslation(
+ *   vtkCommand::LeftButtonPressEvent, vtkEvent::ControlModifier, 0, 0, nullptr);
+ * translator->SetTranslation(vtkCommand::LeftButtonPressEvent, vtkEvent::ControlModifier, 0, 0,
+ *   nullptr, vtkWidgetEvent::Resize);
+ * @endcode
+ * (The widget starts observing a VTK event it had no binding for when it is next enabled.)
+ *
+ * The widget (surface picker) and the representation (sphere and ring pickers) register their
+ * pickers with the interactor's picking manager and pick through it, so the handle stays
+ * pickable in applications that turn the manager on. vtkDeformationHandleRepresentation::
+ * PlaceWidget(bounds) puts the handle in the centre of the bounds; the paired filter follows.
  *
  * ResetHandle() undoes the current edit, CommitEdit() makes the edited surface the rest surface
  * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
@@ -45,6 +58,9 @@ public:
   vtkTypeMacro(vtkDeformationHandleWidget, vtkAbstractWidget);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Use this rather than SetWidgetRepresentation(): it pairs the representation with the filter.
+   */
   void SetRepresentation(vtkDeformationHandleRepresentation* representation);
   vtkDeformationHandleRepresentation* GetDeformationHandleRepresentation();
   void CreateDefaultRepresentation() override;
@@ -85,6 +101,7 @@ protected:
   vtkDeformationHandleWidget();
   ~vtkDeformationHandleWidget() override;
 
+  // The actions of vtkWidgetEvent::Select, Resize, Translate, Move and EndSelect.
   static void SelectAction(vtkAbstractWidget* widget);
   static void ResizeAction(vtkAbstractWidget* widget);
   static void ConstrainedAction(vtkAbstractWidget* widget);
@@ -92,8 +109,16 @@ protected:
   static void MoveAction(vtkAbstractWidget* widget);
   static void EndSelectAction(vtkAbstractWidget* widget);
 
+  /**
+   * Registers the surface picker with the picking manager (vtkInteractorObserver API).
+   */
+  void RegisterPickers() override;
+
   bool PickSurface(int x, int y, double point[3]);
   void PushToFilter();
+  // The filter's handle and transform to the representation, and the representation's
+  // PlaceWidgetEvent to the filter.
+  void PairRepresentation();
 
   vtkLaplacianDeformationFilter* DeformationFilter = nullptr;
   vtkProp* SurfaceProp = nullptr;

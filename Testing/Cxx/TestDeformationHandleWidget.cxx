@@ -2,7 +2,8 @@
 // the handle by clicking the surface, drag it, turn it, resize the ROI, release. Checks the
 // handle transform and the filter's output numerically, the factorization count, and the final
 // frame against a baseline. A second case deletes the widget in the middle of a drag; a third
-// drags with VTK's picking manager on.
+// drags and places with VTK's picking manager on; a fourth places through PlaceWidget and drags
+// with a rebound modifier.
 // Usage: TestDeformationHandleWidget <case> -V <baseline.png> -T <temp folder>
 #include "EditingScene.h"
 
@@ -11,12 +12,15 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkEvent.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPickingManager.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindowInteractor.h"
+#include "vtkWidgetEvent.h"
+#include "vtkWidgetEventTranslator.h"
 
 #include <cmath>
 #include <cstdio>
@@ -237,23 +241,99 @@ int PlaceDragRotateResize(int argc, char* argv[])
 
 int PickingManager()
 {
-  // An application with VTK's picking manager on: the handle must stay pickable, so its drag
-  // moves it and re-solves without refactoring.
+  // An application with VTK's picking manager on: the sphere must stay pickable (the
+  // representation's pickers are registered), so its drag moves the filter's handle and only
+  // re-solves; and a click on the surface must still place the handle (the widget's picker).
   Scene scene;
   scene.Interactor->GetPickingManager()->EnabledOn();
   auto widget = scene.MakeWidget();
   vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
+  Check(scene.Filter->GetNumberOfFactorizations() == 1, "one factorization before the drag");
+  const double* restCenter = scene.Filter->GetHandleCenter();
+  const double start[3] = { restCenter[0], restCenter[1], restCenter[2] };
+  double at[2];
+  scene.Display(start, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 60.0 * t; }));
+  // Where the filter's handle transform puts the filter's handle centre.
+  double moved[3];
+  scene.Filter->GetHandleTransform()->TransformPoint(scene.Filter->GetHandleCenter(), moved);
+  const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(start, moved));
+  std::cout << "with the picking manager on, the handle moved by " << distance << "\n";
+  Check(distance > 0.05 && moved[2] > start[2], "the handle is picked and dragged up");
+  const double* center = scene.Filter->GetHandleCenter();
+  Check(std::sqrt(vtkMath::Distance2BetweenPoints(center, start)) < 1e-12,
+    "the drag leaves the handle's rest centre where it was");
+  Check(scene.Filter->GetNumberOfFactorizations() == 1, "the drag does not refactor");
+
+  // A click on a vertex of the surface outside the region of interest places the handle there.
+  double target[3];
+  scene.Rest->GetPoint(scene.Rest->FindPoint(0.1, 0.2, 0.0), target);
+  double click[2];
+  scene.Display(target, click);
+  scene.Play(Event("MouseMoveEvent", click[0], click[1]) +
+    Event("LeftButtonPressEvent", click[0], click[1]) +
+    Event("LeftButtonReleaseEvent", click[0], click[1]));
+  center = scene.Filter->GetHandleCenter();
+  Check(std::sqrt(vtkMath::Distance2BetweenPoints(center, target)) < 0.02,
+    "a click on the surface places the handle through the picking manager");
+  double current[3];
+  rep->GetCurrentCenter(current);
+  Check(std::sqrt(vtkMath::Distance2BetweenPoints(center, current)) < 1e-12,
+    "the representation shows the placed handle");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+int PlaceWidgetAndBindings()
+{
+  Scene scene;
+  auto widget = scene.MakeWidget();
+  vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
+
+  // rep->PlaceWidget(bounds), as in other VTK widgets: PlaceFactor scales the bounds about their
+  // centre, and the paired filter takes the new handle.
+  double bounds[6] = { 0.2, 0.6, 0.1, 0.5, 0.0, 0.1 };
+  rep->SetPlaceFactor(1.0);
+  rep->PlaceWidget(bounds);
+  const double* center = scene.Filter->GetHandleCenter();
+  Check(std::abs(center[0] - 0.4) < 1e-12 && std::abs(center[1] - 0.3) < 1e-12 &&
+      std::abs(center[2] - 0.05) < 1e-12,
+    "PlaceWidget centres the filter's handle in the bounds");
+  Check(std::abs(scene.Filter->GetHandleRadius() - 0.02) < 1e-12 &&
+      std::abs(scene.Filter->GetROIRadius() - 0.12) < 1e-12,
+    "PlaceWidget sizes the filter's radii from the bounds");
+  rep->SetPlaceFactor(0.5);
+  rep->PlaceWidget(bounds);
+  Check(std::abs(scene.Filter->GetROIRadius() - 0.06) < 1e-12, "PlaceWidget follows PlaceFactor");
+
+  // The modifiers are the event translator's bindings, documented in the header.
+  vtkWidgetEventTranslator* translator = widget->GetEventTranslator();
+  const unsigned long press = vtkCommand::LeftButtonPressEvent;
+  Check(translator->GetTranslation(press, vtkEvent::NoModifier, 0, 0, nullptr) ==
+        vtkWidgetEvent::Select &&
+      translator->GetTranslation(press, vtkEvent::ShiftModifier, 0, 0, nullptr) ==
+        vtkWidgetEvent::Resize &&
+      translator->GetTranslation(press, vtkEvent::ControlModifier, 0, 0, nullptr) ==
+        vtkWidgetEvent::Translate,
+    "Select, Resize with Shift, Translate with Control");
+
+  // Rebound as the header says: Control + drag on the sphere resizes the region, refactoring
+  // once on release.
+  translator->RemoveTranslation(press, vtkEvent::ControlModifier, 0, 0, nullptr);
+  translator->SetTranslation(
+    press, vtkEvent::ControlModifier, 0, 0, nullptr, vtkWidgetEvent::Resize);
+  scene.Window->Render();
   const int factorizations = scene.Filter->GetNumberOfFactorizations();
   double current[3], at[2];
   rep->GetCurrentCenter(current);
   scene.Display(current, at);
-  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 60.0 * t; }));
-  double moved[3];
-  rep->GetCurrentCenter(moved);
-  const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(current, moved));
-  std::cout << "with the picking manager on, the handle moved by " << distance << "\n";
-  Check(distance > 0.05, "the handle is picked and dragged through the picking manager");
-  Check(scene.Filter->GetNumberOfFactorizations() == factorizations, "the drag does not refactor");
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0] + 60.0 * t; p[1] = at[1]; },
+    ControlModifier));
+  Check(scene.Filter->GetROIRadius() > 0.07, "the rebound Control drag resizes the region");
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations + 1,
+    "the rebound resize refactors once");
+  rep->GetCurrentCenter(current);
+  Check(std::sqrt(vtkMath::Distance2BetweenPoints(current, center)) < 1e-12,
+    "the rebound Control drag does not translate");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
@@ -292,6 +372,12 @@ int main(int argc, char* argv[])
   {
     return PickingManager();
   }
-  std::cerr << "usage: " << argv[0] << " PlaceDragRotateResize|DeleteMidInteraction|PickingManager [-V baseline -T temp]\n";
+  if (name == "PlaceWidgetAndBindings")
+  {
+    return PlaceWidgetAndBindings();
+  }
+  std::cerr << "usage: " << argv[0]
+            << " PlaceDragRotateResize|DeleteMidInteraction|PickingManager|PlaceWidgetAndBindings"
+               " [-V baseline -T temp]\n";
   return EXIT_FAILURE;
 }
