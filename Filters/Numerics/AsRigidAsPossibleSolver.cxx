@@ -33,6 +33,18 @@ Eigen::Matrix3d ClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q)
   return q.toRotationMatrix();
 }
 
+// The rotation closest to A, exactly, through its SVD: the seed of a rotation with no history.
+Eigen::Quaterniond PolarRotation(const Eigen::Matrix3d& a)
+{
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0.0)
+  {
+    u.col(2) = -u.col(2); // a reflection: flip the direction of least stretch
+  }
+  return Eigen::Quaterniond(Eigen::Matrix3d(u * svd.matrixV().transpose()));
+}
+
 Vector3 Apply(const AffineMap& map, const Vector3& p)
 {
   return map.leftCols<3>() * p + map.col(3);
@@ -193,7 +205,8 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
   std::vector<Eigen::Matrix3d>& rotations, Quaternions& quaternions, const ParallelFor& loop) const
 {
   rotations.resize(this->NumberOfEnergyVertices);
-  quaternions.resize(this->NumberOfEnergyVertices, Eigen::Quaterniond::Identity());
+  const bool seed = static_cast<int>(quaternions.size()) != this->NumberOfEnergyVertices;
+  quaternions.resize(this->NumberOfEnergyVertices);
   std::vector<double> residuals(this->NumberOfEnergyVertices, 0.0);
   loop(0, this->NumberOfEnergyVertices, [&](int first, int last) {
     for (int i = first; i < last; ++i)
@@ -204,6 +217,10 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
       {
         deformation.noalias() +=
           this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
+      }
+      if (seed)
+      {
+        quaternions[i] = PolarRotation(deformation);
       }
       rotations[i] = ClosestRotation(deformation, quaternions[i]);
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
@@ -246,25 +263,29 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
   return this->Factor.Solve(rhs);
 }
 
-Positions AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
+ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
 {
-  Positions roi = this->RestPatch.topRows(this->NumberOfROIVertices);
+  ArapIterate guess;
+  guess.Points = this->RestPatch.topRows(this->NumberOfROIVertices);
   ArapOptions none;
   none.MaximumIterations = 0;
-  this->Solve(handleMaps, roi, none);
+  this->Solve(handleMaps, guess, none);
   const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
-  const Eigen::MatrixXd free = this->FreeRows.empty() ? Eigen::MatrixXd() : this->Global(identities, this->Patch(roi), SerialFor);
+  const Eigen::MatrixXd free = this->FreeRows.empty() ? Eigen::MatrixXd() : this->Global(identities, this->Patch(guess.Points), SerialFor);
   for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
   {
-    roi.row(this->FreeRows[u]) = free.row(u);
+    guess.Points.row(this->FreeRows[u]) = free.row(u);
   }
-  return roi;
+  guess.Rotations.clear(); // those of the rest positions, not of the guess
+  return guess;
 }
 
 ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMaps,
-  Positions& roiPositions, const ArapOptions& options, const ParallelFor& loop,
+  ArapIterate& iterate, const ArapOptions& options, const ParallelFor& loop,
   std::vector<double>* energies) const
 {
+  Positions& roiPositions = iterate.Points;
+  Quaternions& quaternions = iterate.Rotations;
   for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {
     const int group = this->HandleGroups[k];
@@ -292,7 +313,6 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     }
   };
   std::vector<Eigen::Matrix3d> rotations;
-  Quaternions quaternions;
   result.Energy = this->Rotate(this->Patch(roiPositions), rotations, quaternions, loop);
   if (free == 0 || options.MaximumIterations <= 0)
   {

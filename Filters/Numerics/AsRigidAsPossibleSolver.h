@@ -37,6 +37,18 @@ struct ArapOptions
   int History = 5;
 };
 
+using Quaternions = std::vector<Eigen::Quaterniond, Eigen::aligned_allocator<Eigen::Quaterniond>>;
+
+/// Where the iteration stands: the ROI positions (rows follow region.Vertices) and the rotation
+/// of each vertex of the energy. A solve continues from both. Rotations left empty are seeded
+/// from exact polar decompositions at the positions: seeding them from the identity instead
+/// lets a re-solve of a converged large rotation drift to a worse minimum.
+struct ArapIterate
+{
+  Positions Points;
+  Quaternions Rotations;
+};
+
 struct ArapResult
 {
   int Iterations = 0;
@@ -50,25 +62,23 @@ public:
   /// Assembles and factors L_ff. Returns an error message, empty on success.
   std::string Build(const SurfaceMesh& mesh, const EditRegion& region, const DeformationOptions& options);
 
-  /// The ROI positions (rows follow region.Vertices) after iterating from `roiPositions`, whose
-  /// handle rows are first set to their targets. `energies`, if given, receives the energy
-  /// after each iteration.
-  ArapResult Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions,
+  /// Iterates from `iterate`, whose handle rows are first set to their targets. `energies`, if
+  /// given, receives the energy after each iteration.
+  ArapResult Solve(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
     const ArapOptions& options, const ParallelFor& loop = SerialFor,
     std::vector<double>* energies = nullptr) const;
 
   /// One global step with every rotation the identity: the start of a first solve (the
   /// reconstruction from the rest edges, as the none mode with hard constraints).
-  Positions InitialGuess(const std::vector<AffineMap>& handleMaps) const;
+  ArapIterate InitialGuess(const std::vector<AffineMap>& handleMaps) const;
 
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
   std::vector<Vector3> Patch(const Positions& roiPositions) const;
-  // The local step: rotations of the energy vertices, refined from `quaternions` (identity
-  // where empty), and the energy. Returns the energy.
-  using Quaternions = std::vector<Eigen::Quaterniond, Eigen::aligned_allocator<Eigen::Quaterniond>>;
+  // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
+  // SVDs where empty). Returns the energy.
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
     Quaternions& quaternions, const ParallelFor& loop) const;
   // The global step: new free positions for the rotations.

@@ -195,7 +195,7 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
     }
     this->Record(arap->GetFactor());
     this->Arap = std::move(arap);
-    this->ArapPositions.resize(0, 3);
+    this->ArapWarmStart = {};
     built = true;
   }
   else if (rotation.Mode == RotationMode::Implicit &&
@@ -229,12 +229,12 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
   if (rotation.Mode == RotationMode::AsRigidAsPossible)
   {
     // A drag continues from the last result; a new region starts from the rest edges.
-    if (this->ArapPositions.rows() != this->Region.GetNumberOfVertices())
+    if (this->ArapWarmStart.Points.rows() != this->Region.GetNumberOfVertices())
     {
-      this->ArapPositions = this->Arap->InitialGuess(handleMaps);
+      this->ArapWarmStart = this->Arap->InitialGuess(handleMaps);
     }
-    this->LastArap = this->Arap->Solve(handleMaps, this->ArapPositions, rotation.Arap, this->Loop);
-    roiPositions = this->ArapPositions;
+    this->LastArap = this->Arap->Solve(handleMaps, this->ArapWarmStart, rotation.Arap, this->Loop);
+    roiPositions = this->ArapWarmStart.Points;
   }
   else if (rotation.Mode == RotationMode::Implicit)
   {

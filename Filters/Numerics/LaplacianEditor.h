@@ -159,7 +159,7 @@ private:
   std::unique_ptr<LocalFrames> Frames;
   // As-rigid-as-possible mode, and its last result (the next solve's start).
   std::unique_ptr<AsRigidAsPossibleSolver> Arap;
-  Positions ArapPositions;
+  ArapIterate ArapWarmStart;
   ArapResult LastArap;
   // Implicit mode, and the formulation it was built with.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
