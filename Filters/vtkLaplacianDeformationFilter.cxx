@@ -18,12 +18,13 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSignedCharArray.h"
 #include <vtksys/SystemInformation.hxx>
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,7 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   int SurfaceMerge = -1;
   vtkLaplacianSurfaceAdapter Surface;
   double AvailableMemory = 0.0; // megabytes
+  double Diagonal = 0.0;        // of the rest surface's bounding box
   le::LaplacianEditor Editor;
   vtkLaplacianNormalRefresher Normals;
   vtkDataArray* Selection = nullptr;
@@ -259,6 +261,53 @@ void vtkLaplacianDeformationFilter::ResetStatistics()
   this->ARAPEnergy = 0.0;
 }
 
+double vtkLaplacianDeformationFilter::AbsoluteRadius(double radius) const
+{
+  return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION ? radius * this->Internals->Diagonal
+                                                       : radius;
+}
+
+void vtkLaplacianDeformationFilter::WarnAboutRegion(int centerVertex)
+{
+  const vtkInternals& internals = *this->Internals;
+  const le::EditRegion& region = internals.Editor.GetRegion();
+  const auto handles = std::count(region.Roles.begin(), region.Roles.end(), le::VertexRole::Handle);
+  if (!internals.Selection)
+  {
+    const double* c = this->HandleCenter;
+    const le::Vector3 vertex =
+      internals.Surface.Denormalize(internals.Surface.GetMesh()->GetPositions()[centerVertex]);
+    const double away = (vertex - le::Vector3(c[0], c[1], c[2])).norm();
+    if (away > this->AbsoluteRadius(this->HandleRadius))
+    {
+      vtkWarningMacro(<< "HandleCenter (" << c[0] << ", " << c[1] << ", " << c[2] << ") lies "
+                      << away << " from the surface, farther than the handle radius ("
+                      << this->AbsoluteRadius(this->HandleRadius) << " in mesh units): the handle "
+                      << "is on the nearest vertex, (" << vertex.x() << ", " << vertex.y()
+                      << ", " << vertex.z() << "). Put HandleCenter on the surface.");
+    }
+    if (!region.BordersFixedPart)
+    {
+      vtkWarningMacro(<< "The ROI (radius " << this->AbsoluteRadius(this->ROIRadius)
+                      << " in mesh units) covers the whole connected part of the surface it "
+                      << "lies on: nothing holds it in place but the anchors. Use a smaller "
+                      << "ROIRadius, or SetRadiusUnitsToDiagonalFraction() if the radii were "
+                      << "meant relative to the mesh's size.");
+    }
+  }
+  if (region.GetNumberOfVertices() == 1)
+  {
+    vtkWarningMacro(<< "The ROI holds a single vertex, so the edit moves only that vertex: the "
+                    << "radii are likely too small for this mesh (diagonal "
+                    << internals.Diagonal << "); see SetRadiusUnitsToDiagonalFraction().");
+  }
+  else if (handles == 1)
+  {
+    vtkWarningMacro(<< "The handle holds a single vertex: a larger HandleRadius moves the "
+                    << "surface more smoothly.");
+  }
+}
+
 bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
 {
   vtkInternals& internals = *this->Internals;
@@ -340,6 +389,7 @@ bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
   // The automatic factor limit, taken once per surface so that it does not refactor each move.
   internals.AvailableMemory =
     0.8 * static_cast<double>(vtksys::SystemInformation().GetAvailablePhysicalMemory());
+  internals.Diagonal = rest->GetLength();
   internals.SurfaceTime = time;
   internals.SurfaceMerge = this->MergeCoincidentPoints;
   this->TopologyTime = SecondsSince(start);
@@ -363,8 +413,8 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   else
   {
     region.CenterVertex = surface.GetMesh()->FindNearestVertex(surface.Normalize(this->HandleCenter));
-    region.HandleRadius = this->HandleRadius * surface.GetScale();
-    region.ROIRadius = this->ROIRadius * surface.GetScale();
+    region.HandleRadius = this->AbsoluteRadius(this->HandleRadius) * surface.GetScale();
+    region.ROIRadius = this->AbsoluteRadius(this->ROIRadius) * surface.GetScale();
   }
   le::DeformationOptions system;
   system.Weights = static_cast<le::LaplacianWeights>(this->LaplacianWeights);
@@ -381,9 +431,14 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   const le::EditStatus status = internals.Editor.UpdateRegion(
     region, [&] { return surface.VertexLabels(selection); }, system);
   this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
+  this->NumberOfFactorizationAttempts = internals.Editor.GetNumberOfFactorizationAttempts();
   if (!status.Ok())
   {
     return this->Fail("Cannot edit: " + status.Error + ".");
+  }
+  if (status.Work & le::RebuiltRegion)
+  {
+    this->WarnAboutRegion(region.CenterVertex);
   }
   if (status.Work != le::RebuiltNothing)
   {
@@ -400,7 +455,7 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   le::RotationOptions rotation;
   rotation.Mode = static_cast<le::RotationMode>(this->RotationMode);
   rotation.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
-    ? this->NormalSmoothingRadius * internals.Surface.GetScale()
+    ? this->AbsoluteRadius(this->NormalSmoothingRadius) * internals.Surface.GetScale()
     : 0.2 * internals.Editor.GetRegion().Radius;
   rotation.Iterations = this->NumberOfIterations;
   rotation.PreserveDetailScale = this->PreserveDetailScale != 0;
@@ -414,6 +469,7 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   const Clock::time_point start = Clock::now();
   const le::EditStatus status = internals.Editor.UpdateRotationModel(rotation);
   this->NumberOfFactorizations = internals.Editor.GetNumberOfFactorizations();
+  this->NumberOfFactorizationAttempts = internals.Editor.GetNumberOfFactorizationAttempts();
   if (!status.Ok())
   {
     return this->Fail("Cannot edit: " + status.Error + ".");
@@ -471,15 +527,26 @@ void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* 
   output->SetPoints(surface.MovePoints(rest->GetPoints(), internals.Solution));
   internals.Normals.Refresh(
     output, *surface.GetMesh(), surface.GetRowOfVertex(), internals.Solution);
-  if (this->GenerateEditRoles)
-  {
-    output->GetPointData()->AddArray(surface.GetRoles());
-  }
+  this->AddEditRoles(output, surface.GetRoles());
   const le::EditRegion& region = internals.Editor.GetRegion();
   this->NumberOfROIVertices = region.GetNumberOfVertices();
   this->NumberOfHandleVertices = static_cast<int>(
     std::count(region.Roles.begin(), region.Roles.end(), le::VertexRole::Handle));
   this->SolveTime += SecondsSince(start);
+}
+
+void vtkLaplacianDeformationFilter::AddEditRoles(vtkPolyData* output, vtkDataArray* roles)
+{
+  if (!this->GenerateEditRoles)
+  {
+    return;
+  }
+  vtkPointData* pointData = output->GetPointData();
+  pointData->AddArray(roles);
+  if (!pointData->GetScalars())
+  {
+    pointData->SetActiveScalars("EditRole"); // a default mapper then shows the roles
+  }
 }
 
 void vtkLaplacianDeformationFilter::CommitEdit()
@@ -545,39 +612,59 @@ int vtkLaplacianDeformationFilter::GetNumberOfCommits()
 
 void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
+  // Enums by name, then the facts of the last update.
+  auto name = [](int value, std::initializer_list<const char*> names) {
+    return value >= 0 && value < static_cast<int>(names.size()) ? names.begin()[value] : "?";
+  };
+  auto printVector = [&](const char* label, const double v[3]) {
+    os << indent << label << ": (" << v[0] << ", " << v[1] << ", " << v[2] << ")\n";
+  };
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SelectionMode: " << this->SelectionMode << "\n";
-  os << indent << "HandleCenter: (" << this->HandleCenter[0] << ", " << this->HandleCenter[1]
-     << ", " << this->HandleCenter[2] << ")\n";
-  os << indent << "HandleTranslation: (" << this->HandleTranslation[0] << ", "
-     << this->HandleTranslation[1] << ", " << this->HandleTranslation[2] << ")\n";
-  os << indent << "HandleRotation: (" << this->HandleRotation[0] << ", " << this->HandleRotation[1]
-     << ", " << this->HandleRotation[2] << ")\n";
+  os << indent << "SelectionMode: " << name(this->SelectionMode, { "Geodesic", "Array" }) << "\n";
+  os << indent << "RadiusUnits: "
+     << name(this->RadiusUnits, { "Absolute", "DiagonalFraction" }) << "\n";
+  printVector("HandleCenter", this->HandleCenter);
+  printVector("HandleTranslation", this->HandleTranslation);
+  printVector("HandleRotation", this->HandleRotation);
   os << indent << "HandleRadius: " << this->HandleRadius << "\n";
   os << indent << "ROIRadius: " << this->ROIRadius << "\n";
   os << indent << "AnchorPadding: " << this->AnchorPadding << "\n";
   os << indent << "DistanceMethod: "
-     << (this->DistanceMethod == DISTANCE_EDGE_PATHS ? "EdgePaths" : "FastMarching") << "\n";
+     << name(this->DistanceMethod, { "FastMarching", "EdgePaths" }) << "\n";
   os << indent << "HandleWeight: " << this->HandleWeight << "\n";
   os << indent << "AnchorWeight: " << this->AnchorWeight << "\n";
-  os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
+  os << indent << "LaplacianWeights: "
+     << name(this->LaplacianWeights, { "Uniform", "Cotangent" }) << "\n";
   os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
-  os << indent << "RotationMode: " << this->RotationMode << "\n";
+  os << indent << "RotationMode: "
+     << name(this->RotationMode, { "None", "Explicit", "Implicit", "AsRigidAsPossible" }) << "\n";
   os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "PreserveDetailScale: " << this->PreserveDetailScale << "\n";
-  os << indent << "ImplicitFormulation: " << this->ImplicitFormulation << "\n";
+  os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
+  os << indent << "ImplicitFormulation: "
+     << name(this->ImplicitFormulation, { "PerEdge", "Paper" }) << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
-  os << indent << "Acceleration: " << this->Acceleration << "\n";
-  os << indent << "NumberOfARAPIterations: " << this->NumberOfARAPIterations << "\n";
-  os << indent << "ARAPEnergy: " << this->ARAPEnergy << "\n";
-  os << indent << "Solver: " << this->Solver << "\n";
-  os << indent << "Ordering: " << this->Ordering << "\n";
-  os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << "\n";
-  os << indent << "MergeCoincidentPoints: " << this->MergeCoincidentPoints << "\n";
-  os << indent << "GenerateEditRoles: " << this->GenerateEditRoles << "\n";
+  os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
+  os << indent << "Solver: " << name(this->Solver, { "CHOLMOD", "SimplicialLDLT" }) << "\n";
+  os << indent << "Ordering: "
+     << name(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
+  os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB\n";
+  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
   os << indent << "NumberOfHandleTransforms: " << this->Internals->HandleTransforms.size() << "\n";
-  os << indent << "NumberOfFactorizations: " << this->NumberOfFactorizations << "\n";
-  os << indent << "NumberOfROIVertices: " << this->NumberOfROIVertices << "\n";
+  os << indent << "NumberOfCommits: " << this->Internals->Commits.size() << "\n";
+  os << indent << "Last update:\n";
+  const vtkIndent next = indent.GetNextIndent();
+  os << next << "NumberOfROIVertices: " << this->NumberOfROIVertices << "\n";
+  os << next << "NumberOfHandleVertices: " << this->NumberOfHandleVertices << "\n";
+  os << next << "TopologyTime: " << this->TopologyTime << " s\n";
+  os << next << "SetupTime: " << this->SetupTime << " s (analysis " << this->AnalysisTime
+     << " s, factorization " << this->FactorizationTime << " s)\n";
+  os << next << "SolveTime: " << this->SolveTime << " s\n";
+  os << next << "NumberOfARAPIterations: " << this->NumberOfARAPIterations << "\n";
+  os << next << "ARAPEnergy: " << this->ARAPEnergy << "\n";
+  os << next << "FactorMemory: " << this->FactorMemory << " MB\n";
+  os << next << "NumberOfFactorizations: " << this->NumberOfFactorizations << " (attempted "
+     << this->NumberOfFactorizationAttempts << ")\n";
 }

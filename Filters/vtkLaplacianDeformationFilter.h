@@ -8,7 +8,8 @@
  *
  * The region is chosen either geodesically (the default: a handle of radius HandleRadius around
  * the surface vertex nearest HandleCenter, and an ROI of radius ROIRadius around the same
- * vertex, both measured along mesh edges) or from an integer point array selected with
+ * vertex, both measured on the surface, in mesh units or, with SetRadiusUnitsToDiagonalFraction,
+ * as fractions of the input's bounding-box diagonal) or from an integer point array selected with
  * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name) whose values
  * are 0 fixed, 1 ROI, 2 handle, and 3, 4, ... further handle groups. The outer AnchorPadding
  * fraction of the ROI becomes stationary anchors, weighted in proportion to their distance from
@@ -33,7 +34,10 @@
  * Output: the input with moved points. All point and cell data pass through; point and cell
  * normals are recomputed; the optional EditRole point array classifies each point as 0 fixed,
  * 1 anchor, 2 free or 3 handle (the paper's Fig. 2). On bad input the filter reports an error
- * and passes the input through unchanged.
+ * and passes the input through unchanged, and GetErrorCode() returns vtkErrorCode::UserError
+ * until the next update that succeeds. A region that is likely a mistake (a handle centre away
+ * from the surface, a handle or ROI of one vertex, an ROI that swallows its whole connected
+ * component) draws a warning once per region.
  */
 #ifndef vtkLaplacianDeformationFilter_h
 #define vtkLaplacianDeformationFilter_h
@@ -44,6 +48,7 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkDataArray;
 class vtkLinearTransform;
 class vtkPoints;
 
@@ -84,29 +89,56 @@ public:
     ROLE_HANDLE = 3
   };
 
-  ///@{
   /**
-   * How the handle and the ROI are chosen. Default: geodesic.
+   * How the handle and the ROI are chosen: geodesic discs around HandleCenter (default) or the
+   * integer point array named with SetInputArrayToProcess (0 fixed, 1 ROI, 2+ handle group).
    */
   vtkSetClampMacro(SelectionMode, int, SELECTION_GEODESIC, SELECTION_ARRAY);
   vtkGetMacro(SelectionMode, int);
+  /** Select the handle and ROI as geodesic discs around HandleCenter (the default). */
   void SetSelectionModeToGeodesic() { this->SetSelectionMode(SELECTION_GEODESIC); }
+  /** Select the handle and ROI from the labelled point array (SetInputArrayToProcess). */
   void SetSelectionModeToArray() { this->SetSelectionMode(SELECTION_ARRAY); }
-  ///@}
 
-  ///@{
+  enum RadiusUnitsTypes
+  {
+    RADIUS_ABSOLUTE = 0,
+    RADIUS_DIAGONAL_FRACTION = 1
+  };
+
   /**
-   * Geodesic selection: the handle is centred on the surface vertex nearest HandleCenter and
-   * holds the vertices within HandleRadius of it; the ROI holds those within ROIRadius.
-   * Distances follow DistanceMethod. Defaults: (0,0,0), 0.05 and 0.5.
+   * Units of HandleRadius, ROIRadius and NormalSmoothingRadius: mesh units (absolute, the
+   * default) or fractions of the diagonal of the input's bounding box, so that one setting fits
+   * every mesh (for example a handle of 0.03 and an ROI of 0.15).
+   */
+  vtkSetClampMacro(RadiusUnits, int, RADIUS_ABSOLUTE, RADIUS_DIAGONAL_FRACTION);
+  vtkGetMacro(RadiusUnits, int);
+  /** Radii in mesh units (the default). */
+  void SetRadiusUnitsToAbsolute() { this->SetRadiusUnits(RADIUS_ABSOLUTE); }
+  /** Radii as fractions of the input's bounding-box diagonal. */
+  void SetRadiusUnitsToDiagonalFraction() { this->SetRadiusUnits(RADIUS_DIAGONAL_FRACTION); }
+
+  /**
+   * Geodesic selection: the point the handle is centred on, in mesh coordinates; the handle
+   * sits on the surface vertex nearest it (a warning says when that vertex is farther away than
+   * the handle radius). Default (0, 0, 0).
    */
   vtkSetVector3Macro(HandleCenter, double);
   vtkGetVector3Macro(HandleCenter, double);
+
+  /**
+   * Geodesic selection: the handle holds the vertices within this surface distance of its
+   * centre vertex, in RadiusUnits. Must be smaller than ROIRadius. Default 0.05.
+   */
   vtkSetMacro(HandleRadius, double);
   vtkGetMacro(HandleRadius, double);
+
+  /**
+   * Geodesic selection: the region of interest holds the vertices within this surface distance
+   * of the handle's centre vertex, in RadiusUnits; everything farther is untouched. Default 0.5.
+   */
   vtkSetMacro(ROIRadius, double);
   vtkGetMacro(ROIRadius, double);
-  ///@}
 
   enum DistanceMethods
   {
@@ -114,7 +146,6 @@ public:
     DISTANCE_EDGE_PATHS = 1
   };
 
-  ///@{
   /**
    * How distances on the surface are measured, for the handle, the ROI, the anchor band and
    * weights and the normal smoothing: fast marching on the triangles (default; discs are round)
@@ -123,53 +154,51 @@ public:
    */
   vtkSetClampMacro(DistanceMethod, int, DISTANCE_FAST_MARCHING, DISTANCE_EDGE_PATHS);
   vtkGetMacro(DistanceMethod, int);
+  /** Distances by fast marching on the triangles (the default): round discs. */
   void SetDistanceMethodToFastMarching() { this->SetDistanceMethod(DISTANCE_FAST_MARCHING); }
+  /** Distances along mesh edges (the paper's): polygonal discs. */
   void SetDistanceMethodToEdgePaths() { this->SetDistanceMethod(DISTANCE_EDGE_PATHS); }
-  ///@}
 
-  ///@{
   /**
    * The band of the ROI along its border with the fixed part whose vertices become stationary
-   * anchors, as a fraction of the way from the handle to that border. Default 0.1, the paper's
-   * choice. Anchor weights rise with the distance from the handle (Section 6).
+   * anchors, as a fraction (0 to 1) of the way from the handle to that border. Default 0.1, the
+   * paper's choice. Anchor weights rise with the distance from the handle (Section 6).
    */
   vtkSetClampMacro(AnchorPadding, double, 0.0, 1.0);
   vtkGetMacro(AnchorPadding, double);
-  ///@}
 
-  ///@{
   /**
-   * Soft-constraint weights. Handles: default 100, so that handles land within a small
-   * fraction of a percent of their targets. Anchors: default 1 at the ROI's outer edge,
-   * proportional to the distance from the handle inside the padding.
+   * Soft-constraint weight of the handle vertices (1e-3 to 1e6). Default 100, so that handles
+   * land within a small fraction of a percent of their targets.
    */
   vtkSetClampMacro(HandleWeight, double, 1e-3, 1e6);
   vtkGetMacro(HandleWeight, double);
+
+  /**
+   * Soft-constraint weight of the anchors at the ROI's outer edge (0 to 1e6), proportional to
+   * the distance from the handle inside the padding. Default 1.
+   */
   vtkSetClampMacro(AnchorWeight, double, 0.0, 1e6);
   vtkGetMacro(AnchorWeight, double);
-  ///@}
 
-  ///@{
   /**
    * Weights of the Laplacian: uniform (the paper's umbrella operator, default) or cotangent
    * (clamped for obtuse and degenerate triangles; see LaplacianOperator.h).
    */
   vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
   vtkGetMacro(LaplacianWeights, int);
+  /** Uniform (umbrella) Laplacian weights, the paper's and the default. */
   void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
+  /** Cotangent Laplacian weights, clamped for obtuse and degenerate triangles. */
   void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
-  ///@}
 
-  ///@{
   /**
    * Order of the differential operator: 1 (Laplacian, default) or 2 (bi-Laplacian, smoother
    * transitions at the anchors).
    */
   vtkSetClampMacro(OperatorOrder, int, 1, 2);
   vtkGetMacro(OperatorOrder, int);
-  ///@}
 
-  ///@{
   /**
    * How the differential coordinates follow the local rotations of the edit, so that details
    * keep their orientation:
@@ -190,50 +219,55 @@ public:
    */
   vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
   vtkGetMacro(RotationMode, int);
+  /** Differential coordinates keep their global orientation (the default). */
   void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
+  /** Explicit rotations from smoothed normals (Sections 4 and 7). */
   void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
+  /** Implicit linearized similarity transforms (Section 5). */
   void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
+  /** As-rigid-as-possible local-global iteration (Sorkine and Alexa 2007). */
   void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
-  ///@}
 
-  ///@{
   /**
-   * As-rigid-as-possible mode: the most local-global iterations per update (default 20), and
-   * the relative energy decrease below which an update stops early (default 1e-3). Anderson
-   * acceleration (default on) mixes the last iterates, with a safeguard that keeps the energy
-   * falling; it reaches a given energy in several times fewer iterations.
+   * As-rigid-as-possible mode: the most local-global iterations per update (0 to 10000).
+   * Default 20.
    */
   vtkSetClampMacro(ARAPIterations, int, 0, 10000);
   vtkGetMacro(ARAPIterations, int);
+
+  /**
+   * As-rigid-as-possible mode: an update stops early when an iteration lowers the energy by
+   * less than this fraction of it (0 to 1). Default 1e-3.
+   */
   vtkSetClampMacro(Convergence, double, 0.0, 1.0);
   vtkGetMacro(Convergence, double);
+
+  /**
+   * As-rigid-as-possible mode: Anderson acceleration mixes the last iterates, with a safeguard
+   * that keeps the energy falling; it reaches a given energy in several times fewer iterations.
+   * Default on.
+   */
   vtkSetMacro(Acceleration, vtkTypeBool);
   vtkGetMacro(Acceleration, vtkTypeBool);
   vtkBooleanMacro(Acceleration, vtkTypeBool);
-  ///@}
 
-  ///@{
   /**
-   * Explicit mode: support radius of the smooth normals, in mesh units. It should exceed the
+   * Explicit mode: support radius of the smooth normals, in RadiusUnits. It should exceed the
    * size of the details, so that the normals are those of the surface under them. 0 (the
    * default) means 0.2 times the ROI radius (in array mode, the largest distance of an ROI
    * vertex from the handles).
    */
   vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(NormalSmoothingRadius, double);
-  ///@}
 
-  ///@{
   /**
-   * Explicit mode: how many times to re-estimate the rotations from the previous result and
-   * solve again with the same factor. 1 (default) is the paper's method; more fix the
-   * under-rotation of large bends.
+   * Explicit mode: how many times (1 to 100) to re-estimate the rotations from the previous
+   * result and solve again with the same factor. 1 (default) is the paper's method; more fix
+   * the under-rotation of large bends.
    */
   vtkSetClampMacro(NumberOfIterations, int, 1, 100);
   vtkGetMacro(NumberOfIterations, int);
-  ///@}
 
-  ///@{
   /**
    * Implicit mode: rescale each transformed differential coordinate to its rest length and
    * solve the Laplacian system once more (Sorkine et al. 2004). The linearized similarities
@@ -243,7 +277,6 @@ public:
   vtkSetMacro(PreserveDetailScale, vtkTypeBool);
   vtkGetMacro(PreserveDetailScale, vtkTypeBool);
   vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
-  ///@}
 
   enum ImplicitFormulations
   {
@@ -251,7 +284,6 @@ public:
     IMPLICIT_PAPER = 1
   };
 
-  ///@{
   /**
    * Implicit mode's energy. Per edge (default): the paper's fitted transforms, as linearized
    * rotations, matched against every one-ring edge. Paper: Section 5 as published, one residual
@@ -262,21 +294,23 @@ public:
    */
   vtkSetClampMacro(ImplicitFormulation, int, IMPLICIT_PER_EDGE, IMPLICIT_PAPER);
   vtkGetMacro(ImplicitFormulation, int);
+  /** The implicit energy matched per one-ring edge (the default). */
   void SetImplicitFormulationToPerEdge() { this->SetImplicitFormulation(IMPLICIT_PER_EDGE); }
+  /** The implicit energy as the paper publishes it (Section 5); may inflate free parts. */
   void SetImplicitFormulationToPaper() { this->SetImplicitFormulation(IMPLICIT_PAPER); }
-  ///@}
 
-  ///@{
   /**
    * Sparse Cholesky backend: CHOLMOD supernodal (default where built in) or Eigen's
    * SimplicialLDLT.
    */
   vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_SIMPLICIAL_LDLT);
   vtkGetMacro(Solver, int);
+  /** CHOLMOD's supernodal Cholesky (the default where built in). */
   void SetSolverToCholmod() { this->SetSolver(SOLVER_CHOLMOD); }
+  /** Eigen's SimplicialLDLT. */
   void SetSolverToSimplicialLDLT() { this->SetSolver(SOLVER_SIMPLICIAL_LDLT); }
+  /** Whether this build has CHOLMOD. */
   static bool IsCholmodAvailable();
-  ///@}
 
   enum Orderings
   {
@@ -286,7 +320,6 @@ public:
     ORDERING_NESTED_DISSECTION = 3
   };
 
-  ///@{
   /**
    * CHOLMOD's fill-reducing ordering: automatic (default: AMD below 300,000 unknowns, METIS
    * from there, as measured in the README), AMD, METIS or CHOLMOD's nested dissection.
@@ -294,9 +327,7 @@ public:
    */
   vtkSetClampMacro(Ordering, int, ORDERING_AUTOMATIC, ORDERING_NESTED_DISSECTION);
   vtkGetMacro(Ordering, int);
-  ///@}
 
-  ///@{
   /**
    * Largest factor to attempt, in megabytes. CHOLMOD's analysis predicts the factor's size
    * before it is computed; a larger one is refused with an error, so that a huge region fails
@@ -305,70 +336,72 @@ public:
    */
   vtkSetClampMacro(MaximumFactorMemory, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumFactorMemory, double);
-  ///@}
 
-  ///@{
   /**
-   * Treat input points at the same position as one surface vertex. Default on.
+   * Treat input points at the same position as one surface vertex, so that texture seams and
+   * triangle soups edit as one surface. Default on.
    */
   vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
   vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
   vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
-  ///@}
 
-  ///@{
   /**
-   * Add the EditRole point array (0 fixed, 1 anchor, 2 free, 3 handle). Default on.
+   * Add the EditRole point array (0 fixed, 1 anchor, 2 free, 3 handle), a vtkSignedCharArray
+   * carrying an indexed lookup table of the paper's Fig. 2 colours; it becomes the active
+   * scalars where the input has none, so a default vtkPolyDataMapper shows the roles.
+   * Default on.
    */
   vtkSetMacro(GenerateEditRoles, vtkTypeBool);
   vtkGetMacro(GenerateEditRoles, vtkTypeBool);
   vtkBooleanMacro(GenerateEditRoles, vtkTypeBool);
-  ///@}
 
-  ///@{
   /**
-   * The transform of handle group 0, applied to the handle's rest positions. nullptr means
-   * HandleTranslation and HandleRotation below. The filter's MTime includes the transforms'
-   * MTimes.
+   * The transform of handle group 0, applied to the handle's rest positions. nullptr (the
+   * default) means HandleTranslation and HandleRotation. The filter's MTime includes the
+   * transforms' MTimes.
    */
   void SetHandleTransform(vtkLinearTransform* transform) { this->SetHandleTransform(0, transform); }
   vtkLinearTransform* GetHandleTransform() { return this->GetHandleTransform(0); }
-  ///@}
 
-  ///@{
   /**
-   * Handle group 0's transform as plain properties, for ParaView and scripts: rotation angles
-   * in degrees about x, then y, then z, about HandleCenter, then a translation. Used when no
-   * transform object is set for group 0. Defaults: no motion.
+   * Handle group 0's translation, in mesh units, applied after HandleRotation: the simplest way
+   * to move the handle from scripts, Python, vedo and ParaView. Used when no transform object
+   * is set for group 0. Default (0, 0, 0).
    */
   vtkSetVector3Macro(HandleTranslation, double);
   vtkGetVector3Macro(HandleTranslation, double);
+
+  /**
+   * Handle group 0's rotation: angles in degrees about x, then y, then z, about HandleCenter,
+   * applied before HandleTranslation. Used when no transform object is set for group 0.
+   * Default (0, 0, 0).
+   */
   vtkSetVector3Macro(HandleRotation, double);
   vtkGetVector3Macro(HandleRotation, double);
-  ///@}
 
-  ///@{
   /**
-   * The transform of handle group `group` (array value 2 + group).
+   * The transform of handle group `group` (array value 2 + group); nullptr for no motion.
    */
   void SetHandleTransform(int group, vtkLinearTransform* transform);
   vtkLinearTransform* GetHandleTransform(int group);
+  /** How many handle transform slots are set (the largest group given plus one). */
   int GetNumberOfHandleTransforms();
+  /** Forget every handle transform object. */
   void RemoveAllHandleTransforms();
-  ///@}
 
-  ///@{
   /**
    * Make the current result the rest shape of the next edit, keeping the input connection:
    * the filter updates, keeps the output's points, sets HandleTranslation and HandleRotation to
    * zero and moves HandleCenter with the handle. Handle transform objects are the caller's to
-   * reset (vtkDeformationHandleWidget does). UndoCommit() restores the rest shape before the
-   * last commit and returns false if there is none. A new input forgets all commits.
+   * reset (vtkDeformationHandleWidget does). A new input forgets all commits.
    */
   void CommitEdit();
+  /**
+   * Restore the rest shape before the last CommitEdit(); false if there is none.
+   */
   bool UndoCommit();
+  /** How many commits the current input has. */
   int GetNumberOfCommits();
-  ///@}
 
   /**
    * The rest position of input point `id`: after CommitEdit its committed position, else the
@@ -377,9 +410,17 @@ public:
   bool GetRestPoint(vtkIdType id, double point[3]);
 
   /**
-   * Numeric factorizations since construction.
+   * Numeric factorizations completed since construction.
    */
   vtkGetMacro(NumberOfFactorizations, int);
+
+  /**
+   * Factorizations attempted since construction, failed ones included. A failed one is not
+   * attempted again until something it depends on changes (the region, the system's options,
+   * the rotation mode or formulation), so that a region that cannot be factored does not cost
+   * its failure on every update.
+   */
+  vtkGetMacro(NumberOfFactorizationAttempts, int);
 
   ///@{
   /**
@@ -430,7 +471,14 @@ protected:
    */
   void EditSurface(vtkPolyData* input, vtkPolyData* output);
 
+  /**
+   * Adds the EditRole array to the output when GenerateEditRoles is on, as the active scalars
+   * where the output has none.
+   */
+  void AddEditRoles(vtkPolyData* output, vtkDataArray* roles);
+
   int SelectionMode = SELECTION_GEODESIC;
+  int RadiusUnits = RADIUS_ABSOLUTE;
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
   double HandleTranslation[3] = { 0.0, 0.0, 0.0 };
   double HandleRotation[3] = { 0.0, 0.0, 0.0 };
@@ -457,6 +505,7 @@ protected:
   vtkTypeBool GenerateEditRoles = 1;
 
   int NumberOfFactorizations = 0;
+  int NumberOfFactorizationAttempts = 0;
   int NumberOfROIVertices = 0;
   int NumberOfHandleVertices = 0;
   double TopologyTime = 0.0;
@@ -480,6 +529,10 @@ private:
   void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
   bool Fail(const std::string& message);
   void ResetStatistics();
+  // A radius property in mesh units, after RadiusUnits.
+  double AbsoluteRadius(double radius) const;
+  // Warnings about a region that is unlikely what the user meant.
+  void WarnAboutRegion(int centerVertex);
   vtkPolyData* RestSurface(vtkPolyData* input);
 
   vtkLaplacianDeformationFilter(const vtkLaplacianDeformationFilter&) = delete;

@@ -6,16 +6,43 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkLinearTransform.h"
+#include "vtkLookupTable.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSignedCharArray.h"
+#include "vtkVariant.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace le = LaplacianEditing;
+
+namespace
+{
+// The roles' colours as in the paper's Fig. 2 (fixed grey, anchors red, free green, handle
+// yellow), as an indexed table the array carries: a plain vtkPolyDataMapper colours by it with
+// its default settings.
+vtkSmartPointer<vtkLookupTable> RoleColors()
+{
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  const struct
+  {
+    const char* Name;
+    double Color[3];
+  } roles[] = { { "fixed", { 0.75, 0.75, 0.75 } }, { "anchor", { 0.85, 0.20, 0.15 } },
+    { "free", { 0.35, 0.75, 0.35 } }, { "handle", { 0.95, 0.85, 0.10 } } };
+  table->IndexedLookupOn();
+  table->SetNumberOfTableValues(4);
+  for (int role = 0; role < 4; ++role)
+  {
+    table->SetTableValue(role, roles[role].Color[0], roles[role].Color[1], roles[role].Color[2]);
+    table->SetAnnotation(vtkVariant(role), roles[role].Name);
+  }
+  return table;
+}
+}
 
 std::string vtkLaplacianSurfaceAdapter::Build(vtkPolyData* input, bool mergeCoincidentPoints)
 {
@@ -126,9 +153,7 @@ void vtkLaplacianSurfaceAdapter::IndexRegion(const le::EditRegion& region)
     this->RowOfVertex[region.Vertices[k]] = k;
   }
   this->RoiPoints.clear();
-  this->Roles = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  this->Roles->SetName("EditRole");
-  this->Roles->SetNumberOfTuples(numberOfPoints);
+  this->Roles = NewRoles(numberOfPoints);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     const int k = this->RowOfVertex[vertexOfPoint[i]];
@@ -137,8 +162,18 @@ void vtkLaplacianSurfaceAdapter::IndexRegion(const le::EditRegion& region)
       this->RoiPoints.emplace_back(i, k);
     }
     this->Roles->SetValue(
-      i, static_cast<unsigned char>(k >= 0 ? region.Roles[k] : le::VertexRole::Fixed));
+      i, static_cast<signed char>(k >= 0 ? region.Roles[k] : le::VertexRole::Fixed));
   }
+}
+
+vtkSmartPointer<vtkSignedCharArray> vtkLaplacianSurfaceAdapter::NewRoles(vtkIdType count)
+{
+  auto roles = vtkSmartPointer<vtkSignedCharArray>::New();
+  roles->SetName("EditRole");
+  roles->SetLookupTable(RoleColors());
+  roles->SetNumberOfTuples(count);
+  roles->FillValue(static_cast<signed char>(le::VertexRole::Fixed));
+  return roles;
 }
 
 vtkSmartPointer<vtkPoints> vtkLaplacianSurfaceAdapter::MovePoints(

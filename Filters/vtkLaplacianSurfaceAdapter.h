@@ -13,6 +13,7 @@
 #include "EditRegion.h"
 #include "Types.h"
 
+#include "vtkSignedCharArray.h" // for the EditRole array
 #include "vtkSmartPointer.h"
 
 #include <cstdint>
@@ -25,7 +26,6 @@ class vtkDataArray;
 class vtkLinearTransform;
 class vtkPoints;
 class vtkPolyData;
-class vtkUnsignedCharArray;
 
 class vtkLaplacianSurfaceAdapter
 {
@@ -53,7 +53,9 @@ public:
   /// Indexes the input points in the region (the points to write) and builds the EditRole array.
   void IndexRegion(const LaplacianEditing::EditRegion& region);
   const std::vector<int>& GetRowOfVertex() const { return this->RowOfVertex; }
-  vtkUnsignedCharArray* GetRoles() const { return this->Roles; }
+  vtkSignedCharArray* GetRoles() const { return this->Roles; }
+  /// An EditRole array of `count` fixed points, with its colours (see GenerateEditRoles).
+  static vtkSmartPointer<vtkSignedCharArray> NewRoles(vtkIdType count);
 
   /// A copy of `points` with the region's points moved to `solution` (rows follow the region).
   vtkSmartPointer<vtkPoints> MovePoints(
@@ -67,7 +69,7 @@ private:
   // with their row, and the EditRole array.
   std::vector<int> RowOfVertex;
   std::vector<std::pair<vtkIdType, int>> RoiPoints;
-  vtkSmartPointer<vtkUnsignedCharArray> Roles;
+  vtkSmartPointer<vtkSignedCharArray> Roles;
 };
 
 #endif

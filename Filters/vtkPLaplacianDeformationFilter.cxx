@@ -10,7 +10,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkLaplacianSurfaceAdapter.h"
+#include "vtkSignedCharArray.h"
 
 vtkStandardNewMacro(vtkPLaplacianDeformationFilter);
 vtkCxxSetObjectMacro(vtkPLaplacianDeformationFilter, Controller, vtkMultiProcessController);
@@ -128,22 +129,17 @@ void vtkPLaplacianDeformationFilter::ScatterPoints(
   vtkNew<vtkPoints> points;
   points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
   points->SetNumberOfPoints(count);
-  vtkNew<vtkUnsignedCharArray> roles;
-  roles->SetName("EditRole");
-  roles->SetNumberOfTuples(count);
+  vtkSmartPointer<vtkSignedCharArray> roles = vtkLaplacianSurfaceAdapter::NewRoles(count);
   for (vtkIdType i = 0; i < count; ++i)
   {
     points->SetPoint(i, moved.data() + 3 * i);
-    roles->SetValue(i, static_cast<unsigned char>(moved[3 * count + i]));
+    roles->SetValue(i, static_cast<signed char>(moved[3 * count + i]));
   }
   if (count > 0)
   {
     output->SetPoints(points);
   }
-  if (this->GenerateEditRoles)
-  {
-    output->GetPointData()->AddArray(roles);
-  }
+  this->AddEditRoles(output, roles);
 }
 
 void vtkPLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)

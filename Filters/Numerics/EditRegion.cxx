@@ -175,6 +175,7 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
       }
     }
   }
+  region.BordersFixedPart = touchesFixed;
   const double radius = touchesFixed || region.Radius <= 0.0 ? roiRadius : region.Radius;
   for (int v : region.Vertices)
   {

@@ -37,6 +37,9 @@ struct EditRegion
   int NumberOfHandleGroups = 0;
   /// The largest distance of an ROI vertex from the handles.
   double Radius = 0.0;
+  /// Geodesic selection: whether the ROI borders the fixed part (false: the disc swallowed its
+  /// whole connected component).
+  bool BordersFixedPart = true;
 
   int GetNumberOfVertices() const { return static_cast<int>(this->Vertices.size()); }
 };

@@ -113,6 +113,7 @@ EditStatus LaplacianEditor::UpdateRegion(const RegionRequest& region,
     this->Implicit.reset();
     this->Arap.reset();
     this->System = DeformationSystem();
+    this->NumberOfFactorizationAttempts += system.LeastSquares ? 1 : 0;
     const std::string error =
       system.LeastSquares ? this->System.Build(*this->Mesh, this->Region, system) : std::string();
     if (!error.empty())
@@ -188,6 +189,7 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
   else if (rotation.Mode == RotationMode::AsRigidAsPossible && !this->Arap)
   {
     auto arap = std::make_unique<AsRigidAsPossibleSolver>();
+    ++this->NumberOfFactorizationAttempts;
     const std::string error = arap->Build(*this->Mesh, this->Region, this->SystemBuiltFrom);
     if (!error.empty())
     {
@@ -203,6 +205,7 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
   {
     this->Implicit.reset();
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
+    ++this->NumberOfFactorizationAttempts;
     const std::string error = implicit->Build(
       *this->Mesh, this->Region, this->System, this->SystemBuiltFrom, rotation.Formulation);
     if (!error.empty())

@@ -125,6 +125,8 @@ public:
 
   /// Numeric factorizations since construction.
   int GetNumberOfFactorizations() const { return this->NumberOfFactorizations; }
+  /// Factorizations attempted, failed ones included.
+  int GetNumberOfFactorizationAttempts() const { return this->NumberOfFactorizationAttempts; }
   /// Seconds of symbolic analysis and numeric factorization of the last factorization.
   double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
@@ -177,6 +179,7 @@ private:
   std::unique_ptr<Failure> LastFailure;
   ParallelFor Loop = SerialFor;
   int NumberOfFactorizations = 0;
+  int NumberOfFactorizationAttempts = 0;
   double AnalysisSeconds = 0.0;
   double FactorizationSeconds = 0.0;
 };

@@ -145,7 +145,31 @@ struct Options
   bool Rescale = false;
   bool CompareCGAL = false;
   int ARAPIterations = 20;
+  bool Help = false;
 };
+
+const char* const Usage = R"(usage: LaplacianEditingBenchmark MESH|--sphere N [options]
+
+Times one edit of MESH (OBJ, PLY, STL, VTP, VTK, OFF) or of a generated sphere of about N
+vertices: setup (selection, assembly, factorization) and handle moves. Prints one JSON line.
+
+  --vertex V|largest      handle centre on input point V, or on the largest component (0)
+  --point X Y Z           handle centre at a point
+  --roi F                 ROI radius, a fraction of the bounding-box diagonal (0.25)
+  --handle F              handle radius, a fraction of the diagonal (0.03)
+  --translate DX DY DZ    the final handle move, a fraction of the diagonal (0 0 0.05)
+  --moves N               handle moves timed (20)
+  --order 1|2             operator order (1)
+  --weights uniform|cotangent
+  --solver cholmod|ldlt
+  --ordering auto|amd|metis|nesdis
+  --mode none|explicit|implicit|arap   rotation mode (none)
+  --iterations K          explicit mode's iterations (1)
+  --arap-iterations K     as-rigid-as-possible iterations per move (20)
+  --rescale               implicit mode: PreserveDetailScale
+  --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
+  --help                  this text
+)";
 
 bool Parse(int argc, char* argv[], Options& options)
 {
@@ -153,12 +177,18 @@ bool Parse(int argc, char* argv[], Options& options)
   {
     const std::string arg = argv[i];
     auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
-    auto pick = [](const std::string& value, std::vector<std::string> names) {
-      return static_cast<int>(
-        std::max<std::ptrdiff_t>(0, std::find(names.begin(), names.end(), value) - names.begin()) %
-        names.size());
+    bool known = true;
+    auto pick = [&](const std::string& value, std::vector<std::string> names) {
+      const auto found = std::find(names.begin(), names.end(), value);
+      known = found != names.end();
+      return known ? static_cast<int>(found - names.begin()) : 0;
     };
-    if (arg == "--sphere")
+    if (arg == "--help" || arg == "-h")
+    {
+      options.Help = true;
+      return true;
+    }
+    else if (arg == "--sphere")
       options.SphereVertices = std::atof(next().c_str());
     else if (arg == "--vertex")
     {
@@ -204,6 +234,11 @@ bool Parse(int argc, char* argv[], Options& options)
     else
     {
       std::cerr << "unknown argument " << arg << "\n";
+      return false;
+    }
+    if (!known)
+    {
+      std::cerr << "unknown value " << argv[i] << " of " << arg << "\n";
       return false;
     }
   }
@@ -253,8 +288,9 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   vtkNew<vtkLaplacianDeformationFilter> filter;
   filter->SetInputData(mesh);
   filter->SetHandleCenter(center);
-  filter->SetROIRadius(options.ROI * diagonal);
-  filter->SetHandleRadius(options.Handle * diagonal);
+  filter->SetRadiusUnitsToDiagonalFraction();
+  filter->SetROIRadius(options.ROI);
+  filter->SetHandleRadius(options.Handle);
   filter->SetOperatorOrder(options.Order);
   filter->SetLaplacianWeights(options.Weights);
   filter->SetSolver(options.Solver);
@@ -374,15 +410,10 @@ std::string MeasureCGAL(vtkPolyData* mesh, vtkDataArray* roles, const Options& o
 int main(int argc, char* argv[])
 {
   Options options;
-  if (!Parse(argc, argv, options))
+  if (!Parse(argc, argv, options) || options.Help)
   {
-    std::cerr << "usage: " << argv[0]
-              << " MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F] [--handle F]"
-                 " [--translate DX DY DZ] [--moves N] [--order 1|2] [--weights uniform|cotangent]"
-                 " [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]"
-                 " [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--rescale]"
-                 " [--compare-cgal]\n";
-    return EXIT_FAILURE;
+    (options.Help ? std::cout : std::cerr) << Usage;
+    return options.Help ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   std::string error;
   const std::string meshName = options.SphereVertices > 0.0

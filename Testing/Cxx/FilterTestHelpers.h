@@ -21,17 +21,17 @@ namespace FilterTestHelpers
 {
 inline const std::string DataDir = LAPLACIAN_EDITING_DATA_DIR;
 
-// Collects the filter's error messages instead of printing them.
+// Collects the filter's error (or warning) messages instead of printing them.
 class ErrorCatcher
 {
 public:
-  explicit ErrorCatcher(vtkObject* object)
+  explicit ErrorCatcher(vtkObject* object, unsigned long event = vtkCommand::ErrorEvent)
   {
     this->Callback->SetClientData(this);
     this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
       static_cast<ErrorCatcher*>(self)->Messages += static_cast<const char*>(message);
     });
-    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    object->AddObserver(event, this->Callback);
   }
   std::string Messages;
 

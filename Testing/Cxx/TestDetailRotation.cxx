@@ -7,7 +7,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSphereSource.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSignedCharArray.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -332,7 +332,7 @@ TEST_P(EveryMode, ReconstructsExactlyKeepsTheOutsideAndReusesTheFactor)
   }
   EXPECT_EQ(filter->GetNumberOfFactorizations(), factorizations);
   vtkPolyData* output = filter->GetOutput();
-  auto* roles = vtkUnsignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
+  auto* roles = vtkSignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
     if (roles->GetValue(i) == Filter::ROLE_FIXED)

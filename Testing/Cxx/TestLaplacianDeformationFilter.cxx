@@ -16,7 +16,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSignedCharArray.h"
 
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -35,9 +35,9 @@
 
 namespace
 {
-vtkUnsignedCharArray* Roles(vtkPolyData* output)
+vtkSignedCharArray* Roles(vtkPolyData* output)
 {
-  return vtkUnsignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
+  return vtkSignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
 }
 }
 
@@ -66,7 +66,7 @@ TEST(Filter, MovesHandleAndLeavesOutsideBitIdentical)
   filter->SetHandleTransform(Translation(0.0, 0.05, 0.2));
   filter->Update();
   vtkPolyData* output = filter->GetOutput();
-  vtkUnsignedCharArray* roles = Roles(output);
+  vtkSignedCharArray* roles = Roles(output);
   ASSERT_NE(roles, nullptr);
   int handles = 0, fixed = 0, anchors = 0, free = 0;
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)

@@ -1,4 +1,6 @@
-// Offscreen image regression tests of real edits, compared with committed baselines.
+// Offscreen image regression tests of real edits, compared with committed baselines. Every
+// panel is drawn by a vtkPolyDataMapper with default settings: the EditRole colours come from
+// the array itself.
 // Usage: TestLaplacianDeformationImages <case> <data folder> -V <baseline.png> -T <temp folder>
 //
 //   BumpyPlaneEdit  the demo's embedded edit: before and after

@@ -7,7 +7,7 @@
 #include "vtkIdList.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkUnsignedCharArray.h"
+#include "vtkSignedCharArray.h"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +23,7 @@ void ExpectSoundEdit(vtkPolyData* input, Filter* filter, const double lift[3])
 {
   vtkPolyData* output = filter->GetOutput();
   ASSERT_EQ(output->GetNumberOfPoints(), input->GetNumberOfPoints());
-  auto* roles = vtkUnsignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
+  auto* roles = vtkSignedCharArray::SafeDownCast(output->GetPointData()->GetArray("EditRole"));
   ASSERT_NE(roles, nullptr);
   int handles = 0;
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)

@@ -3,6 +3,8 @@ import math
 import unittest
 
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkIntArray
+from vtkmodules.vtkCommonExecutionModel import vtkPolyDataAlgorithm
+from vtkmodules.vtkCommonMisc import vtkErrorCode
 from vtkmodules.vtkCommonTransforms import vtkTransform
 
 import laplacianediting
@@ -115,9 +117,27 @@ class TestLaplacianDeformationFilter(unittest.TestCase):
                 errors = catch_errors(deform)
                 deform.Update()
                 self.assertTrue(any(expected in m for m in errors), errors)
+                self.assertEqual(deform.GetErrorCode(), vtkErrorCode.UserError)
                 out = deform.GetOutput()
                 self.assertEqual(out.GetNumberOfPoints(), mesh.GetNumberOfPoints())
                 self.assertEqual(out.GetNumberOfCells(), mesh.GetNumberOfCells())
+
+    def test_every_setter_documents_itself(self):
+        """help() on each public setter says more than its signature."""
+        deform = laplacianediting.vtkLaplacianDeformationFilter
+        own = [name for name in dir(deform) if name.startswith("Set")
+               and name not in dir(vtkPolyDataAlgorithm)]
+        self.assertGreater(len(own), 40)
+        undocumented = []
+        for name in own:
+            text = getattr(deform, name).__doc__ or ""
+            # The wrapper writes signature lines ("Name(self...) -> ..." and "C++: ..."), then
+            # the header's comment.
+            prose = [line for line in text.splitlines() if line.strip() and not line.startswith(
+                (name + "(", "C++:", "    ")) and "->" not in line]
+            if not prose:
+                undocumented.append(name)
+        self.assertEqual(undocumented, [])
 
 
 if __name__ == "__main__":

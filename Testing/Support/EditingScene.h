@@ -6,7 +6,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -28,19 +27,6 @@
 
 namespace EditingScene
 {
-inline vtkSmartPointer<vtkLookupTable> RoleColors()
-{
-  auto table = vtkSmartPointer<vtkLookupTable>::New();
-  table->SetNumberOfTableValues(4);
-  table->SetTableValue(0, 0.75, 0.75, 0.75); // fixed
-  table->SetTableValue(1, 0.85, 0.20, 0.15); // anchor
-  table->SetTableValue(2, 0.35, 0.75, 0.35); // free
-  table->SetTableValue(3, 0.95, 0.85, 0.10); // handle
-  table->SetTableRange(0, 3);
-  table->Build();
-  return table;
-}
-
 /// The embedded default edit: lift one side of a bumpy plane (the paper's Fig. 6, top), with
 /// explicit detail rotations. Returns the unedited plane.
 inline vtkSmartPointer<vtkPolyData> SetUpBumpyPlaneEdit(vtkLaplacianDeformationFilter* filter)
@@ -58,24 +44,12 @@ inline vtkSmartPointer<vtkPolyData> SetUpBumpyPlaneEdit(vtkLaplacianDeformationF
   return source->GetOutput();
 }
 
-/// A renderer showing `mesh`, coloured by EditRole when it has one.
+/// A renderer showing `mesh` through a vtkPolyDataMapper with its default settings: the
+/// filter's output shows its EditRole array, which is the active scalars and carries its colours.
 inline vtkSmartPointer<vtkRenderer> MakeRenderer(vtkPolyData* mesh, const double viewport[4])
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(mesh);
-  if (mesh->GetPointData()->GetArray("EditRole"))
-  {
-    mapper->SetLookupTable(RoleColors());
-    mapper->SetColorModeToMapScalars(); // EditRole is unsigned char: map it, do not show it raw
-    mapper->SetScalarModeToUsePointFieldData();
-    mapper->SelectColorArray("EditRole");
-    mapper->SetScalarRange(0, 3);
-    mapper->ScalarVisibilityOn();
-  }
-  else
-  {
-    mapper->ScalarVisibilityOff();
-  }
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->GetProperty()->SetInterpolationToFlat();
