@@ -5,11 +5,13 @@
 #include "vtkLaplacianNormalRefresher.h"
 #include "vtkLaplacianSurfaceAdapter.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLinearTransform.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -122,6 +124,13 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   vtkMTimeType SurfaceTime = 0;
   int SurfaceMerge = -1;
   vtkLaplacianSurfaceAdapter Surface;
+  // The part of the rest surface the edit can reach, what it was computed from (rest time,
+  // selection time, handle centre), the labelled points' half extent or the handle centre's
+  // distance to the surface; and the reach the surface graph was built on.
+  vtkLaplacianSurfaceAdapter::Reach Reach;
+  double ReachKey[5] = { -1.0, -1.0, 0.0, 0.0, 0.0 };
+  double ReachExtent = 0.0;
+  vtkLaplacianSurfaceAdapter::Reach SurfaceReach;
   double AvailableMemory = 0.0; // megabytes
   double Diagonal = 0.0;        // of the rest surface's bounding box
   le::LaplacianEditor Editor;
@@ -369,18 +378,81 @@ vtkPolyData* vtkLaplacianDeformationFilter::RestSurface(vtkPolyData* input)
   return internals.CommittedRest;
 }
 
+void vtkLaplacianDeformationFilter::ComputeReach(vtkPolyData* rest)
+{
+  // Every vertex the edit can touch lies within a geodesic distance, hence a Euclidean one, of
+  // its seeds: in geodesic mode, the handle centre with the ROI radius around its nearest corner
+  // (so any corner as near is covered too); in array mode, the labelled points. Around them, the
+  // explicit mode's normal smoothing support (by default 0.2 of the ROI radius; in array mode,
+  // of the labelled points' extent), plus 10% against the discretization of the distances. The
+  // search for the nearest corner or the labelled points is one pass over the input, repeated
+  // only when what it reads changes.
+  vtkInternals& internals = *this->Internals;
+  vtkDataArray* selection = internals.Selection;
+  const double key[5] = { static_cast<double>(std::max(rest->GetMTime(), rest->GetPoints()->GetMTime())),
+    selection ? static_cast<double>(selection->GetMTime()) : -1.0,
+    selection ? 0.0 : this->HandleCenter[0], selection ? 0.0 : this->HandleCenter[1],
+    selection ? 0.0 : this->HandleCenter[2] };
+  vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
+  if (!std::equal(key, key + 5, internals.ReachKey))
+  {
+    std::copy(key, key + 5, internals.ReachKey);
+    reach.Seeds.clear();
+    internals.ReachExtent = 0.0;
+    if (selection)
+    {
+      for (vtkIdType i = 0; i < rest->GetNumberOfPoints(); ++i)
+      {
+        if (selection->GetComponent(i, 0) != 0.0)
+        {
+          const double* p = rest->GetPoint(i);
+          reach.Seeds.push_back({ p[0], p[1], p[2] });
+        }
+      }
+      vtkBoundingBox box;
+      for (auto seed : reach.Seeds)
+      {
+        box.AddPoint(seed.data());
+      }
+      internals.ReachExtent = box.IsValid() ? 0.5 * box.GetDiagonalLength() : 0.0;
+    }
+    else
+    {
+      const vtkIdType nearest = vtkLaplacianSurfaceAdapter::FindNearestCorner(rest, this->HandleCenter);
+      reach.Seeds.push_back({ this->HandleCenter[0], this->HandleCenter[1], this->HandleCenter[2] });
+      internals.ReachExtent = nearest < 0
+        ? -1.0
+        : std::sqrt(vtkMath::Distance2BetweenPoints(rest->GetPoint(nearest), this->HandleCenter));
+    }
+  }
+  if (reach.Seeds.empty() || internals.ReachExtent < 0.0)
+  {
+    reach.Margin = -1.0; // nothing labelled, or no polygon: the core reports it on the whole input
+    return;
+  }
+  const double roi = selection ? internals.ReachExtent : this->AbsoluteRadius(this->ROIRadius);
+  const double smoothing = this->NormalSmoothingRadius > 0.0
+    ? this->AbsoluteRadius(this->NormalSmoothingRadius)
+    : 0.2 * (selection ? 2.0 * roi : roi);
+  reach.Margin = 1.1 * ((selection ? 0.0 : 2.0 * internals.ReachExtent + roi) + smoothing);
+}
+
 bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
 {
-  // The surface graph depends on the rest surface alone: a new region reuses it.
+  // The surface graph depends on the rest surface and on the part of it the edit can reach.
   vtkInternals& internals = *this->Internals;
   const vtkMTimeType time = std::max(rest->GetMTime(), rest->GetPoints()->GetMTime());
-  if (time == internals.SurfaceTime && this->MergeCoincidentPoints == internals.SurfaceMerge)
+  internals.Diagonal = rest->GetLength();
+  this->ComputeReach(rest);
+  const vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
+  if (time == internals.SurfaceTime && this->MergeCoincidentPoints == internals.SurfaceMerge &&
+    reach == internals.SurfaceReach)
   {
     return true;
   }
   const Clock::time_point start = Clock::now();
   internals.SurfaceTime = 0;
-  const std::string error = internals.Surface.Build(rest, this->MergeCoincidentPoints != 0);
+  const std::string error = internals.Surface.Build(rest, this->MergeCoincidentPoints != 0, reach);
   internals.Editor.SetMesh(internals.Surface.GetMesh());
   if (!error.empty())
   {
@@ -389,9 +461,10 @@ bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
   // The automatic factor limit, taken once per surface so that it does not refactor each move.
   internals.AvailableMemory =
     0.8 * static_cast<double>(vtksys::SystemInformation().GetAvailablePhysicalMemory());
-  internals.Diagonal = rest->GetLength();
   internals.SurfaceTime = time;
   internals.SurfaceMerge = this->MergeCoincidentPoints;
+  internals.SurfaceReach = reach;
+  this->NumberOfSurfaceVertices = internals.Surface.GetMesh()->GetNumberOfVertices();
   this->TopologyTime = SecondsSince(start);
   return true;
 }
@@ -443,7 +516,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   if (status.Work != le::RebuiltNothing)
   {
     internals.Surface.IndexRegion(internals.Editor.GetRegion());
-    internals.Normals.Index(rest, *surface.GetMesh(), surface.GetRowOfVertex());
+    internals.Normals.Index(rest, surface);
     this->SetupTime = SecondsSince(start);
   }
   return true;
@@ -664,6 +737,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "SolveTime: " << this->SolveTime << " s\n";
   os << next << "NumberOfARAPIterations: " << this->NumberOfARAPIterations << "\n";
   os << next << "ARAPEnergy: " << this->ARAPEnergy << "\n";
+  os << next << "NumberOfSurfaceVertices: " << this->NumberOfSurfaceVertices << "\n";
   os << next << "FactorMemory: " << this->FactorMemory << " MB\n";
   os << next << "NumberOfFactorizations: " << this->NumberOfFactorizations << " (attempted "
      << this->NumberOfFactorizationAttempts << ")\n";

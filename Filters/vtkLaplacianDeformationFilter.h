@@ -451,6 +451,14 @@ public:
   ///@}
 
   /**
+   * Vertices of the surface graph the current region was selected on: the part of the input the
+   * edit can reach (the ROI, the rings around it and a margin), not the whole input, so that
+   * the graph, the caches and the normal refresh cost memory and time in proportion to the
+   * region. Only one pass over the input's points and polygons sees the rest.
+   */
+  vtkGetMacro(NumberOfSurfaceVertices, int);
+
+  /**
    * Megabytes of the factors held for the current region (CHOLMOD's prediction; 0 if
    * unknown).
    */
@@ -514,6 +522,7 @@ protected:
   double FactorizationTime = 0.0;
   double SolveTime = 0.0;
   double FactorMemory = 0.0;
+  int NumberOfSurfaceVertices = 0;
   int NumberOfARAPIterations = 0;
   double ARAPEnergy = 0.0;
 
@@ -522,6 +531,8 @@ private:
   // cannot go on.
   bool CheckInput(vtkPolyData* input);
   bool UpdateSurfaceGraph(vtkPolyData* rest);
+  // The part of the rest surface the edit can reach, for the surface graph.
+  void ComputeReach(vtkPolyData* rest);
   bool UpdateRegion(vtkPolyData* rest);
   bool UpdateRotationModel();
   void MapHandles();

@@ -1,5 +1,7 @@
 #include "vtkLaplacianNormalRefresher.h"
 
+#include "vtkLaplacianSurfaceAdapter.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -38,10 +40,11 @@ void RefreshNormalsArray(vtkDataSetAttributes* attributes, const std::vector<vtk
 }
 }
 
-void vtkLaplacianNormalRefresher::Index(
-  vtkPolyData* input, const le::SurfaceMesh& mesh, const std::vector<int>& rowOfVertex)
+void vtkLaplacianNormalRefresher::Index(vtkPolyData* input, const vtkLaplacianSurfaceAdapter& surface)
 {
   // A vertex normal changes when a vertex of an incident triangle moves: the ROI and its ring.
+  const le::SurfaceMesh& mesh = *surface.GetMesh();
+  const std::vector<int>& rowOfVertex = surface.GetRowOfVertex();
   const auto& vertexOfPoint = mesh.GetVertexOfPoint();
   std::vector<char> near(mesh.GetNumberOfVertices(), 0);
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
@@ -53,11 +56,13 @@ void vtkLaplacianNormalRefresher::Index(
     }
   }
   this->Points.clear();
-  for (vtkIdType i = 0; i < static_cast<vtkIdType>(vertexOfPoint.size()); ++i)
+  this->PointVertices.clear();
+  for (std::size_t i = 0; i < vertexOfPoint.size(); ++i)
   {
     if (near[vertexOfPoint[i]])
     {
-      this->Points.push_back(i);
+      this->Points.push_back(surface.GetInputPoints()[i]);
+      this->PointVertices.push_back(vertexOfPoint[i]);
     }
   }
   this->Triangles.clear();
@@ -78,19 +83,16 @@ void vtkLaplacianNormalRefresher::Index(
   this->CellVertexOffsets.assign(1, 0);
   this->CellVertices.clear();
   const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  const auto& offsets = surface.GetPolygonOffsets();
+  const auto& corners = surface.GetPolygonConnectivity();
+  for (std::size_t c = 0; c + 1 < offsets.size(); ++c)
   {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
-    if (std::any_of(ids, ids + size, [&](vtkIdType id) { return rowOfVertex[vertexOfPoint[id]] >= 0; }))
+    const auto first = corners.begin() + offsets[c];
+    const auto last = corners.begin() + offsets[c + 1];
+    if (std::any_of(first, last, [&](std::int64_t p) { return rowOfVertex[vertexOfPoint[p]] >= 0; }))
     {
-      this->Cells.push_back(firstPoly + cells->GetCurrentCellId());
-      for (vtkIdType c = 0; c < size; ++c)
-      {
-        this->CellVertices.push_back(vertexOfPoint[ids[c]]);
-      }
+      this->Cells.push_back(firstPoly + surface.GetInputPolygons()[c]);
+      std::for_each(first, last, [&](std::int64_t p) { this->CellVertices.push_back(vertexOfPoint[p]); });
       this->CellVertexOffsets.push_back(static_cast<int>(this->CellVertices.size()));
     }
   }
@@ -119,7 +121,7 @@ void vtkLaplacianNormalRefresher::Refresh(vtkPolyData* output, const le::Surface
         }
       });
     RefreshNormalsArray(output->GetPointData(), this->Points, [&](vtkIdType r) {
-      const int v = mesh.GetVertexOfPoint()[this->Points[r]];
+      const int v = this->PointVertices[r];
       le::Vector3 n = le::Vector3::Zero();
       for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
       {

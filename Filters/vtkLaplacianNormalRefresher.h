@@ -17,14 +17,14 @@
 
 #include <vector>
 
+class vtkLaplacianSurfaceAdapter;
 class vtkPolyData;
 
 class vtkLaplacianNormalRefresher
 {
 public:
-  /// `rowOfVertex`: the ROI row of each surface vertex, -1 outside the ROI.
-  void Index(vtkPolyData* input, const LaplacianEditing::SurfaceMesh& mesh,
-    const std::vector<int>& rowOfVertex);
+  /// After the surface's IndexRegion; `input` is the polydata it was built from.
+  void Index(vtkPolyData* input, const vtkLaplacianSurfaceAdapter& surface);
 
   /// Refreshes the output's normals (where it has any) for the ROI moved to `solution`, in the
   /// core's coordinates (normals do not depend on the frame's translation and scale).
@@ -32,10 +32,11 @@ public:
     const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution) const;
 
 private:
-  // The points whose normals can change, the triangles around them (and each mesh triangle's
+  // The points whose normals can change (input ids, and their surface vertices), the triangles around them (and each mesh triangle's
   // slot among them, -1 if none), and the polygons to refresh with their surface vertices
   // (offsets into CellVertices).
   std::vector<vtkIdType> Points;
+  std::vector<int> PointVertices;
   std::vector<int> Triangles;
   std::vector<int> TriangleSlot;
   std::vector<vtkIdType> Cells;

@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkLinearTransform.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -15,7 +16,11 @@
 #include "vtkVariant.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
+#include <set>
+#include <unordered_map>
 
 namespace le = LaplacianEditing;
 
@@ -44,10 +49,114 @@ vtkSmartPointer<vtkLookupTable> RoleColors()
 }
 }
 
-std::string vtkLaplacianSurfaceAdapter::Build(vtkPolyData* input, bool mergeCoincidentPoints)
+vtkIdType vtkLaplacianSurfaceAdapter::FindNearestCorner(vtkPolyData* input, const double point[3])
+{
+  std::vector<char> corner(input->GetNumberOfPoints(), 0);
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    std::for_each(ids, ids + size, [&](vtkIdType id) { corner[id] = 1; });
+  }
+  vtkIdType nearest = -1;
+  double nearestDistance = VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    const double distance = vtkMath::Distance2BetweenPoints(input->GetPoint(i), point);
+    if (corner[i] && distance < nearestDistance)
+    {
+      nearest = i;
+      nearestDistance = distance;
+    }
+  }
+  return nearest;
+}
+
+namespace
+{
+// Which points lie within `reach.Margin` of a seed: a box test, then the seeds hashed on a grid
+// of the margin's size, so that the cost is one pass over the points whatever the seeds.
+class ReachTest
+{
+public:
+  explicit ReachTest(const vtkLaplacianSurfaceAdapter::Reach& reach)
+    : Seeds(reach.Seeds)
+    , Margin(reach.Margin)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Box[2 * a] = VTK_DOUBLE_MAX;
+      this->Box[2 * a + 1] = VTK_DOUBLE_MIN;
+    }
+    for (const auto& seed : this->Seeds)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Box[2 * a] = std::min(this->Box[2 * a], seed[a] - this->Margin);
+        this->Box[2 * a + 1] = std::max(this->Box[2 * a + 1], seed[a] + this->Margin);
+      }
+      this->Cells[this->Key(seed.data(), 0, 0, 0)].push_back(&seed);
+    }
+  }
+
+  bool operator()(const double p[3]) const
+  {
+    if (this->Margin < 0.0)
+    {
+      return true;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      if (p[a] < this->Box[2 * a] || p[a] > this->Box[2 * a + 1])
+      {
+        return false;
+      }
+    }
+    const double margin2 = this->Margin * this->Margin;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+        {
+          const auto cell = this->Cells.find(this->Key(p, dx, dy, dz));
+          if (cell != this->Cells.end() &&
+            std::any_of(cell->second.begin(), cell->second.end(), [&](const std::array<double, 3>* s) {
+              return vtkMath::Distance2BetweenPoints(p, s->data()) <= margin2;
+            }))
+          {
+            return true;
+          }
+        }
+    return false;
+  }
+
+private:
+  std::int64_t Key(const double p[3], int dx, int dy, int dz) const
+  {
+    const double size = this->Margin > 0.0 ? this->Margin : 1.0;
+    const std::int64_t i = static_cast<std::int64_t>(std::floor(p[0] / size)) + dx;
+    const std::int64_t j = static_cast<std::int64_t>(std::floor(p[1] / size)) + dy;
+    const std::int64_t k = static_cast<std::int64_t>(std::floor(p[2] / size)) + dz;
+    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+  }
+
+  const std::vector<std::array<double, 3>>& Seeds;
+  double Margin;
+  double Box[6];
+  std::unordered_map<std::int64_t, std::vector<const std::array<double, 3>*>> Cells;
+};
+}
+
+std::string vtkLaplacianSurfaceAdapter::Build(
+  vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach)
 {
   this->Mesh.reset();
   const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  this->NumberOfInputPoints = numberOfPoints;
+  // One pass over the points: their coordinates, and which lie in reach (1).
+  std::vector<char> mark(numberOfPoints, 0);
+  const ReachTest inReach(reach);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     const double* p = input->GetPoint(i);
@@ -55,9 +164,99 @@ std::string vtkLaplacianSurfaceAdapter::Build(vtkPolyData* input, bool mergeCoin
     {
       return "Point " + std::to_string(i) + " has a NaN or infinite coordinate.";
     }
+    mark[i] = inReach(p);
   }
-  double bounds[6];
-  input->GetBounds(bounds);
+  // Two passes over the polygons: those with a corner in reach mark their other corners (2),
+  // then every polygon with a marked corner is kept, so the ring of fixed vertices around the
+  // region keeps its whole one-ring.
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  auto visitPolygons = [&](const std::function<void(vtkIdType, const vtkIdType*)>& visit) {
+    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      cells->GetCurrentCell(size, ids);
+      visit(size, ids);
+    }
+  };
+  std::vector<vtkIdType> ring;
+  visitPolygons([&](vtkIdType size, const vtkIdType* ids) {
+    if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] == 1; }))
+    {
+      std::for_each(ids, ids + size, [&](vtkIdType id) {
+        if (!mark[id])
+        {
+          mark[id] = 2;
+          ring.push_back(id);
+        }
+      });
+    }
+  });
+  if (mergeCoincidentPoints && reach.Margin >= 0.0)
+  {
+    // The ring's points at the same position as another point are that point too (a seam, a
+    // triangle soup): mark their copies, so that the ring keeps its whole one-ring.
+    std::set<std::array<double, 3>> positions;
+    for (vtkIdType id : ring)
+    {
+      const double* p = input->GetPoint(id);
+      positions.insert({ p[0], p[1], p[2] });
+    }
+    for (vtkIdType i = 0; i < numberOfPoints && !positions.empty(); ++i)
+    {
+      const double* p = input->GetPoint(i);
+      mark[i] = mark[i] ? mark[i] : (positions.count({ p[0], p[1], p[2] }) ? 2 : 0);
+    }
+  }
+  std::unordered_map<vtkIdType, std::int64_t> pointOfInput;
+  this->InputPoints.clear();
+  this->InputPolygons.clear();
+  this->Offsets.assign(1, 0);
+  this->Connectivity.clear();
+  vtkIdType polygon = 0;
+  visitPolygons([&](vtkIdType size, const vtkIdType* ids) {
+    if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] != 0; }))
+    {
+      for (vtkIdType c = 0; c < size; ++c)
+      {
+        const auto inserted = pointOfInput.emplace(ids[c], static_cast<std::int64_t>(this->InputPoints.size()));
+        if (inserted.second)
+        {
+          this->InputPoints.push_back(ids[c]);
+        }
+        this->Connectivity.push_back(inserted.first->second);
+      }
+      this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
+      this->InputPolygons.push_back(polygon);
+    }
+    ++polygon;
+  });
+  // Points in reach that no polygon uses stay, as isolated vertices, so that the core can say
+  // what it thinks of them (a labelled one is refused).
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    if (mark[i] == 1 && !pointOfInput.count(i))
+    {
+      pointOfInput.emplace(i, static_cast<std::int64_t>(this->InputPoints.size()));
+      this->InputPoints.push_back(i);
+    }
+  }
+  if (this->InputPoints.empty())
+  {
+    return "No polygon lies within reach of the handle.";
+  }
+
+  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  for (vtkIdType id : this->InputPoints)
+  {
+    const double* p = input->GetPoint(id);
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = std::min(bounds[2 * a], p[a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], p[a]);
+    }
+  }
   this->Center = le::Vector3(
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
   const double diagonal =
@@ -68,15 +267,13 @@ std::string vtkLaplacianSurfaceAdapter::Build(vtkPolyData* input, bool mergeCoin
   }
   this->Scale = 1.0 / diagonal;
 
-  std::vector<le::Vector3> points(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  std::vector<le::Vector3> points(this->InputPoints.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
   {
-    points[i] = this->Normalize(input->GetPoint(i));
+    points[i] = this->Normalize(input->GetPoint(this->InputPoints[i]));
   }
-  std::vector<std::int64_t> offsets, connectivity;
-  vtkLaplacianSurfaceAdapter::GetPolygons(input, offsets, connectivity);
-  auto mesh = std::make_shared<le::SurfaceMesh>(
-    le::SurfaceMesh::FromPolygons(points, offsets, connectivity, mergeCoincidentPoints));
+  auto mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
+    points, this->Offsets, this->Connectivity, mergeCoincidentPoints));
   if (mesh->GetNumberOfTriangles() == 0)
   {
     return "The input polygons are all degenerate: no triangle has three distinct corners.";
@@ -138,7 +335,7 @@ std::vector<int> vtkLaplacianSurfaceAdapter::VertexLabels(vtkDataArray* selectio
   for (vtkIdType i = 0; i < static_cast<vtkIdType>(vertexOfPoint.size()); ++i)
   {
     int& label = labels[vertexOfPoint[i]];
-    label = std::max(label, static_cast<int>(selection->GetComponent(i, 0)));
+    label = std::max(label, static_cast<int>(selection->GetComponent(this->InputPoints[i], 0)));
   }
   return labels;
 }
@@ -153,16 +350,15 @@ void vtkLaplacianSurfaceAdapter::IndexRegion(const le::EditRegion& region)
     this->RowOfVertex[region.Vertices[k]] = k;
   }
   this->RoiPoints.clear();
-  this->Roles = NewRoles(numberOfPoints);
+  this->Roles = NewRoles(this->NumberOfInputPoints);
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     const int k = this->RowOfVertex[vertexOfPoint[i]];
     if (k >= 0)
     {
-      this->RoiPoints.emplace_back(i, k);
+      this->RoiPoints.emplace_back(this->InputPoints[i], k);
+      this->Roles->SetValue(this->InputPoints[i], static_cast<signed char>(region.Roles[k]));
     }
-    this->Roles->SetValue(
-      i, static_cast<signed char>(k >= 0 ? region.Roles[k] : le::VertexRole::Fixed));
   }
 }
 

@@ -2,10 +2,12 @@
  * @class   vtkLaplacianSurfaceAdapter
  * @brief   the numerical core's view of a vtkPolyData, and the way back (not wrapped)
  *
- * Builds the core's SurfaceMesh from the input's polygons, in coordinates centred on the
- * input's bounding box and scaled to a unit diagonal so that offset or tiny models keep their
+ * Builds the core's SurfaceMesh from the part of the input's polygons an edit can reach (those
+ * with a corner near the handle or the labelled points, and the ring of polygons around them), in coordinates centred on
+ * that part's bounding box and scaled to a unit diagonal so that offset or tiny models keep their
  * precision; maps handle transforms into that frame; and, per region, indexes which input points
- * the edit moves so that writing a result touches only them.
+ * the edit moves so that writing a result touches only them. Apart from one pass over the
+ * input's points and polygons, its work and memory follow the part, not the input.
  */
 #ifndef vtkLaplacianSurfaceAdapter_h
 #define vtkLaplacianSurfaceAdapter_h
@@ -16,6 +18,7 @@
 #include "vtkSignedCharArray.h" // for the EditRole array
 #include "vtkSmartPointer.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -30,9 +33,32 @@ class vtkPolyData;
 class vtkLaplacianSurfaceAdapter
 {
 public:
-  /// Checks the coordinates and builds the surface graph. Returns an error message, empty on
-  /// success.
-  std::string Build(vtkPolyData* input, bool mergeCoincidentPoints);
+  /// The part of input space an edit can reach: within `Margin` of a seed point. A negative
+  /// margin reaches everything.
+  struct Reach
+  {
+    std::vector<std::array<double, 3>> Seeds;
+    double Margin = -1.0;
+    bool operator==(const Reach& other) const
+    {
+      return this->Margin == other.Margin && this->Seeds == other.Seeds;
+    }
+  };
+
+  /// Checks the coordinates and builds the surface graph of the polygons with a corner in
+  /// `reach` and the ring of polygons around them. Returns an error message, empty on success.
+  std::string Build(vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach);
+
+  /// The polygon corner of `input` nearest `point`, -1 if there is none (one pass).
+  static vtkIdType FindNearestCorner(vtkPolyData* input, const double point[3]);
+
+  /// The input id of each point of the mesh (SurfaceMesh::GetVertexOfPoint's points), and the
+  /// index among the input's polygons of each polygon kept, with the kept polygons in mesh
+  /// point ids.
+  const std::vector<vtkIdType>& GetInputPoints() const { return this->InputPoints; }
+  const std::vector<vtkIdType>& GetInputPolygons() const { return this->InputPolygons; }
+  const std::vector<std::int64_t>& GetPolygonOffsets() const { return this->Offsets; }
+  const std::vector<std::int64_t>& GetPolygonConnectivity() const { return this->Connectivity; }
 
   std::shared_ptr<const LaplacianEditing::SurfaceMesh> GetMesh() const { return this->Mesh; }
 
@@ -63,6 +89,11 @@ public:
 
 private:
   std::shared_ptr<LaplacianEditing::SurfaceMesh> Mesh;
+  vtkIdType NumberOfInputPoints = 0;
+  std::vector<vtkIdType> InputPoints;
+  std::vector<vtkIdType> InputPolygons;
+  std::vector<std::int64_t> Offsets;
+  std::vector<std::int64_t> Connectivity;
   LaplacianEditing::Vector3 Center = LaplacianEditing::Vector3::Zero();
   double Scale = 1.0;
   // Per region: the ROI row of each surface vertex (-1 outside), the input points in the ROI

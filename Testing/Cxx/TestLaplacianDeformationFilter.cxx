@@ -15,6 +15,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 #include "vtkTransform.h"
 #include "vtkSignedCharArray.h"
 
@@ -597,4 +598,51 @@ TEST(Filter, TranslationAndRotationPropertiesMatchTheTransform)
   byTransform->Update();
   EXPECT_LT(MaxPointDistance(byProperties->GetOutput(), byTransform->GetOutput()), 1e-12);
   EXPECT_GT(MaxPointDistance(input, byProperties->GetOutput()), 0.1);
+}
+
+TEST(Filter, TheSurfaceGraphFollowsTheRegionNotTheInput)
+{
+  // A sphere of 250k points and a region of about 1% of it, selected geodesically and by
+  // array: required, a surface graph under 4 times the ROI (the ROI, its rings and margin) both
+  // ways.
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(500);
+  source->SetPhiResolution(500);
+  source->Update();
+  vtkPolyData* sphere = source->GetOutput();
+  auto geodesic = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  geodesic->SetInputData(sphere);
+  geodesic->SetRadiusUnitsToDiagonalFraction();
+  geodesic->SetHandleCenter(0.3, 0.0, 0.4); // on the sphere, away from its pole
+  geodesic->SetHandleRadius(0.01);
+  geodesic->SetROIRadius(0.05);
+  geodesic->SetHandleTranslation(0.0, 0.0, 0.02);
+  geodesic->Update();
+  const int roi = geodesic->GetNumberOfROIVertices();
+  EXPECT_GT(roi, 1000);
+  EXPECT_LT(roi, sphere->GetNumberOfPoints() / 50);
+  EXPECT_LT(geodesic->GetNumberOfSurfaceVertices(), 4 * roi);
+
+  vtkNew<vtkPolyData> labeled;
+  labeled->ShallowCopy(sphere);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfTuples(sphere->GetNumberOfPoints());
+  vtkSignedCharArray* roles = Roles(geodesic->GetOutput());
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    const int role = roles->GetValue(i);
+    labels->SetValue(i, role == vtkLaplacianDeformationFilter::ROLE_HANDLE ? 2 : (role ? 1 : 0));
+  }
+  labeled->GetPointData()->AddArray(labels);
+  auto array = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  array->SetInputData(labeled);
+  array->SetSelectionModeToArray();
+  array->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  array->SetHandleCenter(geodesic->GetHandleCenter());
+  array->SetHandleTranslation(geodesic->GetHandleTranslation());
+  array->Update();
+  EXPECT_EQ(array->GetNumberOfROIVertices(), roi);
+  EXPECT_LT(array->GetNumberOfSurfaceVertices(), 4 * roi);
+  EXPECT_EQ(array->GetNumberOfHandleVertices(), geodesic->GetNumberOfHandleVertices());
 }
