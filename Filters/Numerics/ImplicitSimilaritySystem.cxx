@@ -274,19 +274,22 @@ Eigen::VectorXd ImplicitSimilaritySystem::Ring(int row, const Positions& roiPosi
   return ring;
 }
 
-Positions ImplicitSimilaritySystem::RotatedDifferentialCoordinates(const Positions& roiPositions) const
+Positions ImplicitSimilaritySystem::RotatedDifferentialCoordinates(
+  const Positions& roiPositions, const ParallelFor& loop) const
 {
   Positions rotated(this->NumberOfVertices, 3);
-  for (int row = 0; row < this->NumberOfVertices; ++row)
-  {
-    const Eigen::Vector3d delta = this->RestDelta.row(row).transpose();
-    const Eigen::Vector3d transformed =
-      ApplyToDelta(delta) * (this->Fits[row] * this->Ring(row, roiPositions) + this->FitOffsets[row]);
-    const double length = transformed.norm();
-    const Eigen::Vector3d rescaled =
-      length > 0.0 ? Eigen::Vector3d(transformed * (delta.norm() / length)) : delta;
-    rotated.row(row) = rescaled.transpose();
-  }
+  loop(0, this->NumberOfVertices, [&](int first, int last) {
+    for (int row = first; row < last; ++row)
+    {
+      const Eigen::Vector3d delta = this->RestDelta.row(row).transpose();
+      const Eigen::Vector3d transformed = ApplyToDelta(delta) *
+        (this->Fits[row] * this->Ring(row, roiPositions) + this->FitOffsets[row]);
+      const double length = transformed.norm();
+      const Eigen::Vector3d rescaled =
+        length > 0.0 ? Eigen::Vector3d(transformed * (delta.norm() / length)) : delta;
+      rotated.row(row) = rescaled.transpose();
+    }
+  });
   return rotated;
 }
 }

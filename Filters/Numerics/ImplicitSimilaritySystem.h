@@ -15,6 +15,7 @@
 #define LaplacianEditing_ImplicitSimilaritySystem_h
 
 #include "DeformationSystem.h"
+#include "ParallelFor.h"
 
 namespace LaplacianEditing
 {
@@ -50,7 +51,8 @@ public:
 
   /// T_i(V') delta_i for every ROI vertex, each scaled back to the length of delta_i: the
   /// rotated differential coordinates without the linearization's change of scale.
-  Positions RotatedDifferentialCoordinates(const Positions& roiPositions) const;
+  Positions RotatedDifferentialCoordinates(
+    const Positions& roiPositions, const ParallelFor& loop = SerialFor) const;
 
   const SparseCholesky& GetFactor() const { return this->Factor; }
 

@@ -245,7 +245,7 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
     if (rotation.PreserveDetailScale)
     {
       roiPositions = this->System.SolveWithDifferentialCoordinates(
-        this->Implicit->RotatedDifferentialCoordinates(roiPositions), handleMaps);
+        this->Implicit->RotatedDifferentialCoordinates(roiPositions, this->Loop), handleMaps);
     }
   }
   else
