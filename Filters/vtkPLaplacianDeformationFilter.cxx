@@ -70,11 +70,15 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input)
     {
       vtkNew<vtkAppendPolyData> append;
       this->PieceSizes.assign(ranks, 0);
+      this->PieceCellSizes.assign(ranks, 0);
+      this->OnlyPolygons = true;
       for (int r = 0; r < ranks; ++r)
       {
         if (auto* piece = vtkPolyData::SafeDownCast(pieces[r]))
         {
           this->PieceSizes[r] = piece->GetNumberOfPoints();
+          this->PieceCellSizes[r] = piece->GetNumberOfCells();
+          this->OnlyPolygons = this->OnlyPolygons && piece->GetNumberOfCells() == piece->GetNumberOfPolys();
           append->AddInputData(piece);
         }
       }
@@ -90,42 +94,67 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input)
 void vtkPLaplacianDeformationFilter::ScatterPoints(
   vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output)
 {
-  // Each rank's slice: coordinates, then the EditRole values.
+  // Each rank's slice: coordinates, the EditRole values, then the refreshed point normals and
+  // polygon normals where the gathered surface has them (polygon normals only when the pieces
+  // hold polygons alone, so that the appended cells follow the pieces in order).
   vtkMultiProcessController* controller = this->Controller;
+  const bool first = controller->GetLocalProcessId() == 0;
+  double normals[2] = { 0.0, 0.0 };
+  if (first)
+  {
+    normals[0] = edited->GetPointData()->GetNormals() ? 1.0 : 0.0;
+    normals[1] = edited->GetCellData()->GetNormals() && this->OnlyPolygons ? 1.0 : 0.0;
+  }
+  controller->Broadcast(normals, 2, 0);
+  const bool pointNormals = normals[0] != 0.0;
+  const bool cellNormals = normals[1] != 0.0;
+  auto sliceSize = [&](vtkIdType points, vtkIdType cells) {
+    return (pointNormals ? 7 : 4) * points + (cellNormals ? 3 * cells : 0);
+  };
   const vtkIdType count = input->GetNumberOfPoints();
-  std::vector<double> moved(4 * count);
-  if (controller->GetLocalProcessId() == 0)
+  const vtkIdType cells = input->GetNumberOfCells();
+  std::vector<double> moved(sliceSize(count, cells));
+  if (first)
   {
     vtkDataArray* roles = edited->GetPointData()->GetArray("EditRole");
-    vtkIdType offset = 0;
+    vtkIdType offset = 0, cellOffset = 0;
     for (int r = 0; r < controller->GetNumberOfProcesses(); ++r)
     {
       const vtkIdType size = this->PieceSizes[r];
-      std::vector<double> slice(4 * size);
+      const vtkIdType cellSize = this->PieceCellSizes[r];
+      std::vector<double> slice(sliceSize(size, cellSize));
       for (vtkIdType i = 0; i < size && edited->GetPoints(); ++i)
       {
         edited->GetPoint(offset + i, slice.data() + 3 * i);
         slice[3 * size + i] = roles ? roles->GetTuple1(offset + i) : 0.0;
+        if (pointNormals)
+        {
+          edited->GetPointData()->GetNormals()->GetTuple(offset + i, slice.data() + 4 * size + 3 * i);
+        }
+      }
+      for (vtkIdType c = 0; c < cellSize && cellNormals; ++c)
+      {
+        edited->GetCellData()->GetNormals()->GetTuple(
+          cellOffset + c, slice.data() + (pointNormals ? 7 : 4) * size + 3 * c);
       }
       offset += size;
+      cellOffset += cellSize;
       if (r == 0)
       {
         moved = std::move(slice);
       }
       else
       {
-        controller->Send(slice.data(), 4 * size, r, PointsTag);
+        controller->Send(slice.data(), static_cast<vtkIdType>(slice.size()), r, PointsTag);
       }
     }
   }
   else
   {
-    controller->Receive(moved.data(), 4 * count, 0, PointsTag);
+    controller->Receive(moved.data(), static_cast<vtkIdType>(moved.size()), 0, PointsTag);
   }
 
   output->ShallowCopy(input);
-  output->GetPointData()->SetNormals(nullptr);
-  output->GetCellData()->SetNormals(nullptr);
   vtkNew<vtkPoints> points;
   points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
   points->SetNumberOfPoints(count);
@@ -139,6 +168,24 @@ void vtkPLaplacianDeformationFilter::ScatterPoints(
   {
     output->SetPoints(points);
   }
+  // The normals as the serial filter leaves them: the input's, refreshed near the edit.
+  auto refresh = [](vtkDataSetAttributes* attributes, const double* values, bool sent) {
+    vtkDataArray* original = attributes->GetNormals();
+    if (!original || !sent)
+    {
+      attributes->SetNormals(nullptr);
+      return;
+    }
+    auto copy = vtk::TakeSmartPointer(original->NewInstance());
+    copy->DeepCopy(original);
+    for (vtkIdType i = 0; i < copy->GetNumberOfTuples(); ++i)
+    {
+      copy->SetTuple(i, values + 3 * i);
+    }
+    attributes->SetNormals(copy);
+  };
+  refresh(output->GetPointData(), moved.data() + 4 * count, pointNormals);
+  refresh(output->GetCellData(), moved.data() + (pointNormals ? 7 : 4) * count, cellNormals);
   this->AddEditRoles(output, roles);
 }
 

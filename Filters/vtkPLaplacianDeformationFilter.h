@@ -5,8 +5,10 @@
  * The edit is global (one sparse system over the region), so the pieces go to the first rank,
  * which edits the whole surface (coincident piece-boundary points merge into one vertex) and
  * sends each rank its own points back, in its own order. The first rank caches the gathered
- * surface on the pieces' MTimes, so a handle move sends no geometry. Point and cell normals are
- * dropped rather than left stale. With one process, or no controller, it is the serial filter.
+ * surface on the pieces' MTimes, so a handle move sends no geometry back up. Point and polygon
+ * normals come back refreshed near the edit, as the serial filter leaves them (polygon normals
+ * when the pieces hold only polygons; otherwise they are dropped rather than left stale). With
+ * one process, or no controller, it is the serial filter.
  *
  * @sa vtkLaplacianDeformationFilter vtkMultiProcessController
  */
@@ -49,12 +51,15 @@ private:
   vtkPLaplacianDeformationFilter(const vtkPLaplacianDeformationFilter&) = delete;
   void operator=(const vtkPLaplacianDeformationFilter&) = delete;
 
-  // Rank 0: the gathered surface, each piece's MTime and point count.
+  // Rank 0: the gathered surface, each piece's MTime, point and cell counts, and whether the
+  // pieces hold polygons only.
   bool GatherPieces(vtkPolyData* input);
   void ScatterPoints(vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output);
   vtkSmartPointer<vtkPolyData> Gathered;
   std::vector<double> PieceTimes;
   std::vector<vtkIdType> PieceSizes;
+  std::vector<vtkIdType> PieceCellSizes;
+  bool OnlyPolygons = true;
 };
 
 #endif

@@ -1,5 +1,6 @@
 """pvbatch, serial or under mpiexec, or pvpython connected to a pvserver: edit a real mesh split
-into pieces across the ranks and write every output point to a file.
+into pieces across the ranks and write every output point, its normal and its EditRole to a
+file.
 
     [mpiexec -np 2] pvbatch TestParallel.py PLUGIN POINTS.txt MESH
     pvpython TestParallel.py PLUGIN POINTS.txt MESH SERVER_PORT
@@ -15,12 +16,15 @@ if len(sys.argv) > 4:
     Connect("localhost", int(sys.argv[4]))
     LoadPlugin(sys.argv[1], remote=True)  # the server runs the filter
 LoadPlugin(sys.argv[1], remote=False)
-from paraview.simple import ExtractSurface, OpenDataFile, RedistributeDataSet  # noqa: E402
+from paraview.simple import (ExtractSurface, GenerateSurfaceNormals, OpenDataFile,  # noqa: E402
+                             RedistributeDataSet)
 import paraview.simple as simple  # noqa: E402
 
 # The mesh is read on the first rank and redistributed: each rank gets a piece, and the pieces
 # repeat their shared boundary points, as ParaView's parallel pipelines do.
 mesh = ExtractSurface(Input=RedistributeDataSet(Input=OpenDataFile(sys.argv[3])))
+# Point normals (one per point, no splitting), which the edit must refresh on every rank.
+mesh = GenerateSurfaceNormals(Input=mesh, Splitting=0, Consistency=0)
 bounds = servermanager.Fetch(mesh).GetBounds()
 size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
 deform = simple.LaplacianDeformation(Input=mesh)
@@ -35,8 +39,13 @@ deform.HandleTranslation = [0.15 * size, 0.05 * size, 0.02 * size]
 deform.UpdatePipeline()
 edited = servermanager.Fetch(deform)  # all pieces, appended on the first rank
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+normals = edited.GetPointData().GetNormals()
+roles = edited.GetPointData().GetArray("EditRole")
+if normals is None or roles is None:
+    sys.exit("FAILED: the output has no point normals or no EditRole")
 with open(sys.argv[2], "w") as points:
     for i in range(edited.GetNumberOfPoints()):
-        points.write("%.17g %.17g %.17g\n" % edited.GetPoint(i))
+        values = edited.GetPoint(i) + normals.GetTuple3(i) + (roles.GetTuple1(i),)
+        points.write("%.17g %.17g %.17g %.9g %.9g %.9g %d\n" % values)
 print(f"{edited.GetNumberOfPoints()} points from {ranks} rank(s)", flush=True)
 
