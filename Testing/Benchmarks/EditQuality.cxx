@@ -1,7 +1,7 @@
 // The quality of large edits, measured against CGAL 5.5's Surface_mesh_deformation (ARAP) on the
 // same vertex sets; prints one JSON line per edit.
 //
-//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|all]
+//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|all] [--picture DIR]
 //
 // Edits:
 //  - cactus: CGAL's cactus.off with cactus.sel (0 fixed, 1 ROI, 2 handle) and the 70-degree
@@ -17,7 +17,10 @@
 // one-ring and the weighted squared residual of its edges, normalized by the ROI's weighted
 // squared edge lengths; clamped cotangent weights), the ROI's area ratio, the faces turned over,
 // setup and update seconds. For CGAL ARAP (its default, cotangent weights), the same after 1, 5,
-// 50 and 1000 iterations from the rest shape, with the seconds spent.
+// 50 and 1000 iterations from the rest shape, with the seconds spent. With --picture, writes
+// DIR/<edit>-modes.png: the rest shape, none, explicit (5 iterations), implicit, as rigid as
+// possible, and CGAL ARAP after 1000 iterations, side by side (offscreen; run under Xvfb).
+#include "EditingScene.h"
 #include "ReferenceEdits.h"
 
 #include "vtkLaplacianDeformationFilter.h"
@@ -66,8 +69,18 @@ struct Mode
   bool Accelerate = true;
 };
 
+// The panels of --picture: copies of the results, in order.
+using Panels = std::vector<vtkSmartPointer<vtkPolyData>>;
+
+vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  return copy;
+}
+
 std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured,
-  const Mode& mode, double* energy = nullptr)
+  const Mode& mode, double* energy = nullptr, Panels* panels = nullptr)
 {
   vtkNew<vtkLaplacianDeformationFilter> filter;
   ReferenceEdits::Configure(edit, filter);
@@ -87,6 +100,10 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
   const Clock::time_point start = Clock::now();
   filter->Update();
   const double update = SecondsSince(start);
+  if (panels)
+  {
+    panels->push_back(Copy(filter->GetOutput()));
+  }
   if (energy)
   {
     const auto deformed = ReferenceEdits::PointsOf(filter->GetOutput());
@@ -104,8 +121,8 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
 // CGAL ARAP from the rest shape: the measures after each iteration count, with the seconds.
-std::string MeasureCGAL(
-  const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured, double target)
+std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured,
+  double target, Panels* panels)
 {
   using namespace CGALSurface;
   using Deformation = CGAL::Surface_mesh_deformation<Mesh>;
@@ -161,6 +178,16 @@ std::string MeasureCGAL(
       json << ", \"reaches_arap_energy\": {\"iterations\": " << iteration
            << ", \"deform_seconds\": " << seconds << "}";
     }
+    if (iteration == 1000 && panels && !panels->empty())
+    {
+      // The last panel (our ARAP result) with CGAL's points, so that it keeps the roles.
+      vtkSmartPointer<vtkPolyData> cgal = Copy(panels->back());
+      for (vtkIdType i = 0; i < static_cast<vtkIdType>(deformed.size()); ++i)
+      {
+        cgal->GetPoints()->SetPoint(i, deformed[i].data());
+      }
+      panels->push_back(cgal);
+    }
     if (report)
     {
       json << ", \"" << iteration << "\": {" << measured.Json(deformed)
@@ -178,11 +205,16 @@ int main(int argc, char* argv[])
 {
   if (argc < 2 || std::string(argv[1]) == "--help")
   {
-    std::cerr << "usage: " << argv[0] << " DATA_DIR [--edit cactus|twist|armadillo|all]\n";
+    (argc < 2 ? std::cerr : std::cout)
+      << "usage: " << argv[0] << " DATA_DIR [--edit cactus|twist|armadillo|all] [--picture DIR]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string data = argv[1];
-  const std::string which = argc > 3 && std::string(argv[2]) == "--edit" ? argv[3] : "all";
+  std::string which = "all", pictures;
+  for (int i = 2; i + 1 < argc; i += 2)
+  {
+    (std::string(argv[i]) == "--picture" ? pictures : which) = argv[i + 1];
+  }
   const Mode modes[] = { { "none", vtkLaplacianDeformationFilter::ROTATION_NONE, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "explicit1", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "explicit5", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 5, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
@@ -210,16 +242,34 @@ int main(int argc, char* argv[])
     std::cout << "{\"edit\": \"" << name << "\", \"vertices\": " << edit.Mesh->GetNumberOfPoints()
               << ", \"roi_vertices\": " << measured.Region.size();
     double arapEnergy = 0.0;
+    Panels panels = { Copy(edit.Mesh) };
     for (const Mode& mode : modes)
     {
+      const std::string modeName = mode.Name;
+      const bool shown = modeName == "none" || modeName == "explicit5" ||
+        modeName == "implicit" || modeName == "arap";
       std::cout << ", "
-                << MeasureMode(edit, measured, mode,
-                     std::string(mode.Name) == "arap" ? &arapEnergy : nullptr);
+                << MeasureMode(edit, measured, mode, modeName == "arap" ? &arapEnergy : nullptr,
+                     pictures.empty() || !shown ? nullptr : &panels);
     }
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
-    std::cout << ", " << MeasureCGAL(edit, measured, arapEnergy);
+    std::cout << ", " << MeasureCGAL(edit, measured, arapEnergy, pictures.empty() ? nullptr : &panels);
 #endif
     std::cout << "}" << std::endl;
+    if (!pictures.empty())
+    {
+      // The cactus from its side, the bunny's ear and Armadillo's hand from the front, framed.
+      const double side[3] = { 1.0, 0.0, 0.0 }, front[3] = { 0.0, 0.0, -1.0 };
+      const double zUp[3] = { 0.0, 0.0, 1.0 }, yUp[3] = { 0.0, 1.0, 0.0 };
+      std::vector<vtkPolyData*> meshes(panels.begin(), panels.end());
+      double region[6];
+      EditingScene::GetRegionBounds(meshes, region);
+      const bool cactus = name == "cactus";
+      vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeComparisonWindow(
+        meshes, cactus ? side : front, cactus ? zUp : yUp, 300, 300, cactus ? nullptr : region);
+      window->Render();
+      EditingScene::SaveScreenshot(window, pictures + "/" + name + "-modes.png");
+    }
   }
   return EXIT_SUCCESS;
 }
