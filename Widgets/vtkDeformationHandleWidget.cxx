@@ -9,6 +9,7 @@
 #include "vtkCommand.h"
 #include "vtkDataSet.h"
 #include "vtkEvent.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPickingManager.h"
 #include "vtkPolyData.h"
@@ -21,6 +22,8 @@
 #include "vtkWidgetCallbackMapper.h"
 #include "vtkWidgetEvent.h"
 
+#include <cstdlib>
+
 vtkStandardNewMacro(vtkDeformationHandleWidget);
 
 struct vtkDeformationHandleWidget::vtkInternals
@@ -29,11 +32,39 @@ struct vtkDeformationHandleWidget::vtkInternals
   // The representation whose PlaceWidgetEvent reaches the filter, and the observer's tag.
   vtkWeakPointer<vtkWidgetRepresentation> ObservedRepresentation;
   unsigned long PlaceObserver = 0;
+  // A press outside the handle places the handle if it is released where it went down (within
+  // 3 pixels). The interactor style, which orbits meanwhile, holds the interactor's focus, so
+  // the moves and the release are watched by a passive observer, which sees them all the same.
+  bool PendingClick = false;
+  int PressPosition[2] = { 0, 0 };
+  vtkWeakPointer<vtkRenderWindowInteractor> ClickInteractor;
+  vtkNew<vtkCallbackCommand> ClickObserver;
+  unsigned long ClickTags[2] = { 0, 0 };
+
+  bool IsClick(const int position[2]) const
+  {
+    return this->PendingClick && std::abs(position[0] - this->PressPosition[0]) <= 3 &&
+      std::abs(position[1] - this->PressPosition[1]) <= 3;
+  }
+
+  void StopWatchingClick()
+  {
+    this->PendingClick = false;
+    if (this->ClickInteractor)
+    {
+      this->ClickInteractor->RemoveObserver(this->ClickTags[0]);
+      this->ClickInteractor->RemoveObserver(this->ClickTags[1]);
+    }
+    this->ClickInteractor = nullptr;
+  }
 };
 
 vtkDeformationHandleWidget::vtkDeformationHandleWidget()
   : Internals(new vtkInternals)
 {
+  this->Internals->ClickObserver->SetClientData(this);
+  this->Internals->ClickObserver->SetCallback(vtkDeformationHandleWidget::WatchClick);
+  this->Internals->ClickObserver->PassiveObserverOn();
   this->Internals->SurfacePicker->SetTolerance(0.002);
   this->Internals->SurfacePicker->PickFromListOn();
   // Modifiers are bound here, in the event translator, so that applications can rebind them.
@@ -53,6 +84,7 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
 
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
 {
+  this->Internals->StopWatchingClick();
   if (vtkWidgetRepresentation* observed = this->Internals->ObservedRepresentation)
   {
     observed->RemoveObserver(this->Internals->PlaceObserver);
@@ -163,7 +195,7 @@ void vtkDeformationHandleWidget::PushToFilter()
   }
 }
 
-bool vtkDeformationHandleWidget::PickSurface(int x, int y, double point[3])
+bool vtkDeformationHandleWidget::PickSurface(int x, int y, vtkIdType& pointId)
 {
   if (!this->SurfaceProp || !this->CurrentRenderer)
   {
@@ -182,17 +214,9 @@ bool vtkDeformationHandleWidget::PickSurface(int x, int y, double point[3])
     picker->Pick(x, y, 0.0, this->CurrentRenderer);
     path = picker->GetPath();
   }
-  if (!path || picker->GetPointId() < 0)
-  {
-    return false;
-  }
-  // The picked vertex at rest (the output keeps the input's point ids).
-  if (this->DeformationFilter)
-  {
-    return this->DeformationFilter->GetRestPoint(picker->GetPointId(), point);
-  }
-  picker->GetDataSet()->GetPoint(picker->GetPointId(), point);
-  return true;
+  // The output keeps the input's point ids.
+  pointId = path ? picker->GetPointId() : -1;
+  return pointId >= 0;
 }
 
 void vtkDeformationHandleWidget::PlaceHandle(const double point[3])
@@ -258,15 +282,18 @@ void vtkDeformationHandleWidget::BeginInteraction(bool resize, bool constrain)
   const int state = rep->ComputeInteractionState(x, y);
   if (state == vtkDeformationHandleRepresentation::Outside)
   {
-    double point[3];
-    if (!this->PickSurface(x, y, point))
-    {
-      return; // not ours: the interactor style gets the event
-    }
-    this->EventCallbackCommand->SetAbortFlag(1);
-    this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
-    this->PlaceHandle(point);
-    this->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
+    // Not ours: the interactor style orbits the camera. A release at the same place is a click,
+    // which places the handle (ClickAction).
+    vtkInternals& internals = *this->Internals;
+    internals.StopWatchingClick();
+    internals.PendingClick = true;
+    internals.PressPosition[0] = x;
+    internals.PressPosition[1] = y;
+    internals.ClickInteractor = this->Interactor;
+    internals.ClickTags[0] =
+      this->Interactor->AddObserver(vtkCommand::MouseMoveEvent, internals.ClickObserver);
+    internals.ClickTags[1] =
+      this->Interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, internals.ClickObserver);
     return;
   }
   using Rep = vtkDeformationHandleRepresentation;
@@ -281,6 +308,53 @@ void vtkDeformationHandleWidget::BeginInteraction(bool resize, bool constrain)
   this->StartInteraction();
   this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
   this->Render();
+}
+
+void vtkDeformationHandleWidget::WatchClick(
+  vtkObject* caller, unsigned long event, void* clientData, void*)
+{
+  auto* self = static_cast<vtkDeformationHandleWidget*>(clientData);
+  vtkInternals& internals = *self->Internals;
+  const int* position = static_cast<vtkRenderWindowInteractor*>(caller)->GetEventPosition();
+  if (event == vtkCommand::MouseMoveEvent)
+  {
+    internals.PendingClick = internals.IsClick(position); // a drag is the camera's
+    return;
+  }
+  const bool click = internals.IsClick(position);
+  internals.StopWatchingClick();
+  if (click)
+  {
+    self->ClickAction(position[0], position[1]);
+  }
+}
+
+void vtkDeformationHandleWidget::ClickAction(int x, int y)
+{
+  // The picked point is resolved after the commit, so that it is the point as the user sees
+  // it: the committed rest shape is the edited one.
+  vtkIdType pointId = -1;
+  double point[3];
+  if (!this->PickSurface(x, y, pointId))
+  {
+    return;
+  }
+  this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
+  vtkTransform* transform = this->GetDeformationHandleRepresentation()->GetTransform();
+  if (this->DeformationFilter && !transform->GetMatrix()->IsIdentity())
+  {
+    this->DeformationFilter->CommitEdit(); // placing the handle elsewhere keeps the edit
+  }
+  if (this->DeformationFilter)
+  {
+    this->DeformationFilter->GetRestPoint(pointId, point);
+  }
+  else
+  {
+    this->Internals->SurfacePicker->GetDataSet()->GetPoint(pointId, point);
+  }
+  this->PlaceHandle(point);
+  this->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
 }
 
 void vtkDeformationHandleWidget::MoveAction(vtkAbstractWidget* widget)

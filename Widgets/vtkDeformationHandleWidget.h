@@ -10,9 +10,12 @@
  *
  * Default bindings (left button), set in the event translator so that applications can rebind
  * them (GetEventTranslator()->SetTranslation(...)):
- * - vtkWidgetEvent::Select (press, no modifier): on the surface (SetSurfaceProp), put the
- *   handle on the picked vertex; on the sphere, translate in the view plane; on the ring,
- *   rotate about the view direction;
+ * - vtkWidgetEvent::Select (press, no modifier): on the sphere, translate in the view plane; on
+ *   the ring, rotate about the view direction; anywhere else the event goes on to the
+ *   interactor style, so a drag orbits the camera as in any VTK application, and a click (a
+ *   release within 3 pixels of the press) on the surface (SetSurfaceProp) puts the handle on
+ *   the picked vertex. An edit in progress is committed first (CommitEdit), never thrown away:
+ *   the new handle starts from the edited shape;
  * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis;
  * - vtkWidgetEvent::Resize (Shift + press): on the sphere, resize the region of interest; on the
  *   ring, resize the handle;
@@ -73,7 +76,7 @@ public:
   vtkGetObjectMacro(DeformationFilter, vtkLaplacianDeformationFilter);
 
   /**
-   * The prop showing the surface; a press on it places the handle.
+   * The prop showing the surface; a click on it places the handle.
    */
   void SetSurfaceProp(vtkProp* prop);
   vtkGetObjectMacro(SurfaceProp, vtkProp);
@@ -114,7 +117,12 @@ protected:
    */
   void RegisterPickers() override;
 
-  bool PickSurface(int x, int y, double point[3]);
+  // The surface point under (x, y), if any.
+  bool PickSurface(int x, int y, vtkIdType& pointId);
+  // A click (press and release within a few pixels) outside the handle: on the surface, commit
+  // the edit in progress and put the handle on the picked point.
+  void ClickAction(int x, int y);
+  static void WatchClick(vtkObject* caller, unsigned long event, void* clientData, void*);
   void PushToFilter();
   // The filter's handle and transform to the representation, and the representation's
   // PlaceWidgetEvent to the filter.
