@@ -28,19 +28,20 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
 {
   this->InteractionState = Outside;
   this->HandleProperty = vtkProperty::New();
+  // Opaque wire spheres: the surface shows through the wires, and nothing depends on how the
+  // renderer orders translucent triangles (a translucent sphere drew as stripes under Mesa).
   this->HandleProperty->SetColor(0.95, 0.85, 0.10); // the paper's yellow handle
-  this->HandleProperty->SetOpacity(0.45);
+  this->HandleProperty->SetRepresentationToWireframe();
+  this->HandleProperty->SetLineWidth(1.5);
   this->SelectedHandleProperty = vtkProperty::New();
+  this->SelectedHandleProperty->DeepCopy(this->HandleProperty);
   this->SelectedHandleProperty->SetColor(1.0, 0.55, 0.0);
-  this->SelectedHandleProperty->SetOpacity(0.6);
-  // Only the front of the translucent sphere: its back would blend with it in triangle order.
-  this->HandleProperty->BackfaceCullingOn();
-  this->SelectedHandleProperty->BackfaceCullingOn();
+  this->SelectedHandleProperty->SetLineWidth(2.5);
   this->RingProperty = vtkProperty::New();
   this->RingProperty->SetColor(0.2, 0.45, 0.95);
 
-  this->HandleSource->SetThetaResolution(32);
-  this->HandleSource->SetPhiResolution(16);
+  this->HandleSource->SetThetaResolution(24);
+  this->HandleSource->SetPhiResolution(12);
   this->HandleMapper->SetInputConnection(this->HandleSource->GetOutputPort());
   this->HandleActor->SetMapper(this->HandleMapper);
   this->HandleActor->SetProperty(this->HandleProperty);
@@ -60,7 +61,7 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
   this->ROIActor->SetMapper(this->ROIMapper);
   this->ROIActor->GetProperty()->SetRepresentationToWireframe();
   this->ROIActor->GetProperty()->SetColor(0.85, 0.2, 0.15);
-  this->ROIActor->GetProperty()->SetOpacity(0.5);
+
   this->ROIActor->VisibilityOff();
 
   for (vtkCellPicker* picker : { this->HandlePicker.Get(), this->RingPicker.Get() })
@@ -339,24 +340,27 @@ void vtkDeformationHandleRepresentation::ReleaseGraphicsResources(vtkWindow* win
 
 int vtkDeformationHandleRepresentation::RenderOpaqueGeometry(vtkViewport* viewport)
 {
+  // Each actor draws in the pass its property calls for (applications may make them translucent).
   this->BuildRepresentation();
-  return this->RingActor->RenderOpaqueGeometry(viewport);
+  int count = this->RingActor->RenderOpaqueGeometry(viewport);
+  count += this->HandleActor->RenderOpaqueGeometry(viewport);
+  return count + (this->ROIActor->GetVisibility() ? this->ROIActor->RenderOpaqueGeometry(viewport) : 0);
 }
 
 int vtkDeformationHandleRepresentation::RenderTranslucentPolygonalGeometry(vtkViewport* viewport)
 {
   this->BuildRepresentation();
-  int count = this->HandleActor->RenderTranslucentPolygonalGeometry(viewport);
-  if (this->ROIActor->GetVisibility())
-  {
-    count += this->ROIActor->RenderTranslucentPolygonalGeometry(viewport);
-  }
-  return count;
+  int count = this->RingActor->RenderTranslucentPolygonalGeometry(viewport);
+  count += this->HandleActor->RenderTranslucentPolygonalGeometry(viewport);
+  return count +
+    (this->ROIActor->GetVisibility() ? this->ROIActor->RenderTranslucentPolygonalGeometry(viewport) : 0);
 }
 
 vtkTypeBool vtkDeformationHandleRepresentation::HasTranslucentPolygonalGeometry()
 {
-  return 1;
+  return this->RingActor->HasTranslucentPolygonalGeometry() ||
+    this->HandleActor->HasTranslucentPolygonalGeometry() ||
+    (this->ROIActor->GetVisibility() && this->ROIActor->HasTranslucentPolygonalGeometry());
 }
 
 void vtkDeformationHandleRepresentation::PrintSelf(ostream& os, vtkIndent indent)

@@ -3,7 +3,7 @@
  * @brief   the handle of a Laplacian edit: a sphere to drag, a ring to turn
  *
  * The representation draws the handle of a vtkLaplacianDeformationFilter edit where the handle
- * transform puts it: a translucent sphere of the handle radius, and a ring around it,
+ * transform puts it: a wire sphere of the handle radius, and a ring around it,
  * perpendicular to the view. While the ROI is being resized it also shows the ROI as a
  * wireframe sphere. Its transform, GetTransform(), is what the filter consumes: a rotation
  * about the handle centre followed by a translation.
