@@ -1,13 +1,19 @@
 // An interactive Laplacian editor: open a mesh (or the embedded bumpy plane), drag the handle,
 // watch the surface follow.
 //
-//   InteractiveEditor [--mode none|explicit|implicit] [--offscreen SCREENSHOT.png] [MESH]
+//   InteractiveEditor [--mode none|explicit|implicit|arap] [--up x|y|z]
+//                     [--offscreen SCREENSHOT.png] [MESH]
 //
-// Mouse: click the surface to place the handle; drag the sphere to move it (Control: along one
-// axis), the ring to turn it; Shift + drag the sphere resizes the region, Shift + drag the ring
-// the handle. Keys: m rotation mode, r reset, c commit the edit, u undo the commit,
-// s save edited.vtp, q quit. With --offscreen it plays a scripted drag instead and saves a
-// screenshot (no window needs to show).
+// MESH: OBJ, PLY, STL, OFF, VTP or VTK. The first view puts the up axis (default y, the scans'
+// convention) up and the mesh's longer horizontal extent across the screen; the first handle
+// sits on the point that stands out most in that view, with radii of 0.03 and 0.15 of the
+// mesh's diagonal. Mouse: a left drag orbits the camera, as in any VTK application; a click on
+// the surface places the handle there (an edit in progress is committed first); drag the sphere
+// to move the handle (Control: along one axis), the ring to turn it; Shift + drag the sphere
+// resizes the region, Shift + drag the ring the handle. Keys: m rotation mode, r reset, c commit
+// the edit, u undo the commit, s save edited.vtp, q quit. With --offscreen it plays a scripted
+// drag instead and saves a screenshot (no window needs to show). A file it cannot read: one
+// line on stderr, exit code 1.
 #include "EditingScene.h"
 #include "MeshReader.h"
 
@@ -15,6 +21,7 @@
 #include "vtkDeformationHandleWidget.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkRenderWindowInteractor.h"
@@ -22,6 +29,7 @@
 #include "vtkTextProperty.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -29,10 +37,10 @@
 namespace
 {
 const char* Help =
-  "mouse: click surface = place handle | drag sphere = move (Ctrl: one axis) | drag ring = turn\n"
-  "       Shift+drag sphere = region size | Shift+drag ring = handle size\n"
+  "mouse: drag = orbit | click surface = place handle (commits the edit) | drag sphere = move\n"
+  "       (Ctrl: one axis) | drag ring = turn | Shift+drag sphere = region | Shift+drag ring = handle\n"
   "keys:  m rotation mode | r reset | c commit edit | u undo commit | s save edited.vtp | q quit";
-const char* ModeNames[] = { "none", "explicit", "implicit" };
+const char* ModeNames[] = { "none", "explicit", "implicit", "arap" };
 
 struct Editor
 {
@@ -55,7 +63,7 @@ void OnKey(vtkObject* caller, unsigned long, void* data, void*)
   Editor& editor = *static_cast<Editor*>(data);
   const std::string key = interactor->GetKeySym() ? interactor->GetKeySym() : "";
   if (key == "m")
-    editor.Filter->SetRotationMode((editor.Filter->GetRotationMode() + 1) % 3);
+    editor.Filter->SetRotationMode((editor.Filter->GetRotationMode() + 1) % 4);
   else if (key == "r")
     editor.Widget->ResetHandle();
   else if (key == "c")
@@ -89,25 +97,31 @@ int main(int argc, char* argv[])
 {
   std::string meshPath, screenshot;
   int mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
+  int up = 1;
+  const std::string usage = std::string("usage: ") + argv[0] +
+    " [--mode none|explicit|implicit|arap] [--up x|y|z] [--offscreen SCREENSHOT.png] [MESH]";
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    if (arg == "--mode" && i + 1 < argc)
-    {
-      const std::string name = argv[++i];
-      mode = name == "none" ? 0 : (name == "implicit" ? 2 : 1);
-    }
-    else if (arg == "--offscreen" && i + 1 < argc)
-      screenshot = argv[++i];
+    const std::string value = i + 1 < argc ? argv[i + 1] : "";
+    if (arg == "--mode" && std::count(std::begin(ModeNames), std::end(ModeNames), value))
+      mode = static_cast<int>(std::find(std::begin(ModeNames), std::end(ModeNames), value) - ModeNames), ++i;
+    else if (arg == "--up" && (value == "x" || value == "y" || value == "z"))
+      up = value[0] - 'x', ++i;
+    else if (arg == "--offscreen" && !value.empty())
+      screenshot = value, ++i;
     else if (arg == "-h" || arg == "--help")
     {
-      std::cout << "usage: " << argv[0]
-                << " [--mode none|explicit|implicit] [--offscreen SCREENSHOT.png] [MESH]\n"
-                << Help << "\n";
+      std::cout << usage << "\n" << Help << "\n";
       return EXIT_SUCCESS;
     }
-    else
+    else if (arg[0] != '-' && meshPath.empty())
       meshPath = arg;
+    else
+    {
+      std::cerr << "error: unexpected argument '" << arg << "'; " << usage << "\n";
+      return EXIT_FAILURE;
+    }
   }
 
   vtkNew<vtkLaplacianDeformationFilter> filter;
@@ -126,17 +140,27 @@ int main(int argc, char* argv[])
       std::cerr << "error: " << error << "\n";
       return EXIT_FAILURE;
     }
-    // Start with a handle on the first point, radii relative to the mesh size.
     filter->SetInputData(mesh);
-    filter->SetHandleCenter(mesh->GetPoint(0));
-    filter->SetHandleRadius(0.04 * mesh->GetLength());
-    filter->SetROIRadius(0.25 * mesh->GetLength());
+    filter->SetRadiusUnitsToDiagonalFraction();
+    filter->SetHandleRadius(0.03);
+    filter->SetROIRadius(0.15);
   }
   filter->SetRotationMode(mode);
-  filter->Update();
 
   const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
-  vtkSmartPointer<vtkRenderer> renderer = EditingScene::MakeRenderer(filter->GetOutput(), full);
+  vtkSmartPointer<vtkRenderer> renderer = EditingScene::MakeRenderer(mesh, full);
+  if (meshPath.empty())
+  {
+    renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.0);
+    renderer->ResetCamera();
+  }
+  else
+  {
+    // The first handle on the point that stands out most in the first view.
+    const int view = EditingScene::FrameMesh(renderer, mesh, up);
+    filter->SetHandleCenter(mesh->GetPoint(EditingScene::ProtrudingPoint(mesh, view)));
+  }
+  filter->Update();
   auto* surface = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
   surface->GetMapper()->SetInputConnection(filter->GetOutputPort());
   vtkNew<vtkTextActor> help, status;
@@ -161,8 +185,6 @@ int main(int argc, char* argv[])
   interactor->SetRenderWindow(window);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   interactor->SetInteractorStyle(style);
-  renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.0);
-  renderer->ResetCamera();
 
   vtkNew<vtkDeformationHandleWidget> widget;
   widget->SetInteractor(interactor);

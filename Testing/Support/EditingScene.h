@@ -60,6 +60,51 @@ inline vtkSmartPointer<vtkRenderer> MakeRenderer(vtkPolyData* mesh, const double
   return renderer;
 }
 
+/// Frames `mesh` as a user expects a first view: axis `up` (0 x, 1 y, 2 z) up on the screen,
+/// looking along the horizontal axis of smaller extent from its + side, so that the longer
+/// horizontal extent lies across the screen. Returns that view axis.
+inline int FrameMesh(vtkRenderer* renderer, vtkPolyData* mesh, int up)
+{
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const int a = (up + 1) % 3, b = (up + 2) % 3;
+  const int view = bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * b + 1] - bounds[2 * b] ? a : b;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double position[3] = { 0.0, 0.0, 0.0 }, viewUp[3] = { 0.0, 0.0, 0.0 };
+  position[view] = 1.0;
+  viewUp[up] = 1.0;
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(position);
+  camera->SetViewUp(viewUp);
+  renderer->ResetCamera(bounds);
+  return view;
+}
+
+/// A point that stands out in that first view: on the camera's side of the centre along axis
+/// `view`, the farthest from the centre across the screen (an ear tip, a fingertip).
+inline vtkIdType ProtrudingPoint(vtkPolyData* mesh, int view)
+{
+  double center[3];
+  mesh->GetCenter(center);
+  vtkIdType best = 0;
+  double bestDistance = -1.0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const double* p = mesh->GetPoint(i);
+    double across = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      across += k == view ? 0.0 : (p[k] - center[k]) * (p[k] - center[k]);
+    }
+    if (p[view] >= center[view] && across > bestDistance)
+    {
+      best = i;
+      bestDistance = across;
+    }
+  }
+  return best;
+}
+
 /// Writes what `window` shows to a PNG file.
 inline void SaveScreenshot(vtkRenderWindow* window, const std::string& path)
 {
