@@ -276,6 +276,13 @@ double vtkLaplacianDeformationFilter::AbsoluteRadius(double radius) const
                                                        : radius;
 }
 
+double vtkLaplacianDeformationFilter::GetRadiusScale()
+{
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  const double diagonal = input && input->GetNumberOfPoints() > 0 ? input->GetLength() : 0.0;
+  return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION && diagonal > 0.0 ? diagonal : 1.0;
+}
+
 void vtkLaplacianDeformationFilter::WarnAboutRegion(int centerVertex)
 {
   const vtkInternals& internals = *this->Internals;

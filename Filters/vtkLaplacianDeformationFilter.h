@@ -113,6 +113,11 @@ public:
    */
   vtkSetClampMacro(RadiusUnits, int, RADIUS_ABSOLUTE, RADIUS_DIAGONAL_FRACTION);
   vtkGetMacro(RadiusUnits, int);
+  /**
+   * Mesh units per radius unit: 1 for absolute radii, the input's bounding-box diagonal for
+   * fractions of it (1 while there is no input). Widgets that draw the radii use it.
+   */
+  double GetRadiusScale();
   /** Radii in mesh units (the default). */
   void SetRadiusUnitsToAbsolute() { this->SetRadiusUnits(RADIUS_ABSOLUTE); }
   /** Radii as fractions of the input's bounding-box diagonal. */

@@ -133,8 +133,10 @@ void vtkDeformationHandleWidget::PairRepresentation()
   if (this->DeformationFilter && rep)
   {
     rep->SetCenter(this->DeformationFilter->GetHandleCenter());
-    rep->SetHandleRadius(this->DeformationFilter->GetHandleRadius());
-    rep->SetROIRadius(this->DeformationFilter->GetROIRadius());
+    // The representation works in mesh units, the filter in its RadiusUnits.
+    const double scale = this->DeformationFilter->GetRadiusScale();
+    rep->SetHandleRadius(scale * this->DeformationFilter->GetHandleRadius());
+    rep->SetROIRadius(scale * this->DeformationFilter->GetROIRadius());
     this->DeformationFilter->SetHandleTransform(rep->GetTransform());
   }
 }
@@ -190,8 +192,9 @@ void vtkDeformationHandleWidget::PushToFilter()
   if (this->DeformationFilter && rep)
   {
     this->DeformationFilter->SetHandleCenter(rep->GetCenter());
-    this->DeformationFilter->SetHandleRadius(rep->GetHandleRadius());
-    this->DeformationFilter->SetROIRadius(rep->GetROIRadius());
+    const double scale = this->DeformationFilter->GetRadiusScale();
+    this->DeformationFilter->SetHandleRadius(rep->GetHandleRadius() / scale);
+    this->DeformationFilter->SetROIRadius(rep->GetROIRadius() / scale);
   }
 }
 

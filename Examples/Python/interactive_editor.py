@@ -1,13 +1,18 @@
 #!/usr/bin/env python3
 """Interactive Laplacian mesh editing from Python.
 
-    interactive_editor.py [--mode none|explicit|implicit] [--offscreen SCREENSHOT.png] [MESH]
+    interactive_editor.py [--mode none|explicit|implicit|arap] [--up x|y|z]
+                          [--offscreen SCREENSHOT.png] [MESH]
 
-Opens MESH (OBJ, PLY, STL, VTP) or the embedded bumpy plane with the handle widget.
-Mouse: click the surface to place the handle; drag the sphere to move it (Ctrl: along one
-axis), the ring to turn it; Shift + drag the sphere resizes the region, Shift + drag the ring
-the handle. Keys: m rotation mode, r reset, c commit the edit, u undo the commit,
+Opens MESH (OBJ, PLY, STL, OFF, VTP, VTK) or the embedded bumpy plane with the handle widget.
+The first view puts the up axis (default y) up and the mesh's longer horizontal extent across
+the screen; the first handle sits on the point that stands out most, with radii of 0.03 and
+0.15 of the diagonal. Mouse: a left drag orbits the camera; a click on the surface places the
+handle (an edit in progress is committed first); drag the sphere to move the handle (Ctrl:
+along one axis), the ring to turn it; Shift + drag the sphere resizes the region, Shift + drag
+the ring the handle. Keys: m rotation mode, r reset, c commit the edit, u undo the commit,
 s save edited.vtp, q quit. With --offscreen it plays a scripted drag and saves a screenshot.
+A file it cannot read: one line on stderr, exit code 1.
 
 Needs PYTHONPATH=build/vtk/lib/python3/dist-packages (see the README).
 """
@@ -18,10 +23,12 @@ import sys
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (interactor styles)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (rendering backend)
-from vtkmodules.vtkCommonCore import vtkLookupTable
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOLegacy import vtkPolyDataReader
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkInteractorEventRecorder, vtkPolyDataMapper,
@@ -30,35 +37,97 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkInteractorEventRecorder, v
 
 import laplacianediting
 
-HELP = ("mouse: click surface = place handle | drag sphere = move (Ctrl: one axis) | drag ring = turn\n"
-        "       Shift+drag sphere = region size | Shift+drag ring = handle size\n"
+HELP = ("mouse: drag = orbit | click surface = place handle (commits the edit) | drag sphere = move\n"
+        "       (Ctrl: one axis) | drag ring = turn | Shift+drag sphere = region | Shift+drag ring = handle\n"
         "keys:  m rotation mode | r reset | c commit edit | u undo commit | s save edited.vtp | q quit")
-MODES = ["none", "explicit", "implicit"]
-READERS = {"obj": vtkOBJReader, "ply": vtkPLYReader, "stl": vtkSTLReader, "vtp": vtkXMLPolyDataReader}
+MODES = ["none", "explicit", "implicit", "arap"]
+READERS = {"obj": vtkOBJReader, "ply": vtkPLYReader, "stl": vtkSTLReader, "vtp": vtkXMLPolyDataReader,
+           "vtk": vtkPolyDataReader}
 
 
-def role_colors():
-    """Fixed grey, anchors red, free green, handle yellow: the paper's Fig. 2."""
-    table = vtkLookupTable()
-    table.SetNumberOfTableValues(4)
-    for role, rgb in enumerate([(0.75, 0.75, 0.75), (0.85, 0.2, 0.15), (0.35, 0.75, 0.35), (0.95, 0.85, 0.1)]):
-        table.SetTableValue(role, *rgb, 1.0)
-    table.SetTableRange(0, 3)
-    table.Build()
-    return table
+def read_off(path):
+    """An OFF file (OFF, COFF, NOFF...: positions first on each vertex line, then polygons),
+    which VTK has no reader for."""
+    with open(path) as off:
+        lines = [line.split("#", 1)[0].split() for line in off]
+    lines = [words for words in lines if words]
+    if not lines or not lines[0][0].endswith("OFF"):
+        raise ValueError("not an OFF file")
+    counts = lines[0][1:] if len(lines[0]) > 1 else lines[1]
+    first = 1 if len(lines[0]) > 1 else 2
+    n_points, n_faces = int(counts[0]), int(counts[1])
+    points = vtkPoints()
+    for words in lines[first:first + n_points]:
+        points.InsertNextPoint(*map(float, words[:3]))
+    polys = vtkCellArray()
+    for words in lines[first + n_points:first + n_points + n_faces]:
+        size = int(words[0])
+        polys.InsertNextCell(size, [int(v) for v in words[1:1 + size]])
+    if points.GetNumberOfPoints() != n_points or polys.GetNumberOfCells() != n_faces:
+        raise ValueError("the file ends early")
+    mesh = vtkPolyData()
+    mesh.SetPoints(points)
+    mesh.SetPolys(polys)
+    return mesh
 
 
-def make_filter(mesh_path, mode):
+def read_mesh(path):
+    """The mesh at `path`, or SystemExit with one line saying why not."""
+    extension = path.rsplit(".", 1)[-1].lower() if "." in path else ""
+    if extension not in READERS and extension != "off":
+        raise SystemExit(f"error: unknown mesh format '.{extension}' (use OBJ, PLY, STL, OFF, VTP or VTK)")
+    try:
+        with open(path, "rb"):
+            pass
+    except OSError as error:
+        raise SystemExit(f"error: cannot open {path}: {error.strerror}")
+    try:
+        if extension == "off":
+            mesh = read_off(path)
+        else:
+            reader = READERS[extension]()
+            reader.SetFileName(path)
+            reader.Update()
+            mesh = reader.GetOutput()
+    except (ValueError, IndexError) as error:
+        raise SystemExit(f"error: cannot read {path}: {error}")
+    if mesh.GetNumberOfPolys() == 0:
+        raise SystemExit(f"error: {path} holds no polygons")
+    return mesh
+
+
+def frame_mesh(renderer, mesh, up):
+    """Up axis up, looking along the horizontal axis of smaller extent: returns that axis."""
+    bounds = mesh.GetBounds()
+    a, b = (up + 1) % 3, (up + 2) % 3
+    view = a if bounds[2 * a + 1] - bounds[2 * a] < bounds[2 * b + 1] - bounds[2 * b] else b
+    camera = renderer.GetActiveCamera()
+    camera.SetFocalPoint(0, 0, 0)
+    camera.SetPosition(*[1.0 if k == view else 0.0 for k in range(3)])
+    camera.SetViewUp(*[1.0 if k == up else 0.0 for k in range(3)])
+    renderer.ResetCamera(bounds)
+    return view
+
+
+def protruding_point(mesh, view):
+    """On the camera's side of the centre, the point farthest from it across the screen."""
+    center = mesh.GetCenter()
+    best, best_distance = 0, -1.0
+    for i in range(mesh.GetNumberOfPoints()):
+        p = mesh.GetPoint(i)
+        across = sum((p[k] - center[k]) ** 2 for k in range(3) if k != view)
+        if p[view] >= center[view] and across > best_distance:
+            best, best_distance = i, across
+    return best
+
+
+def make_filter(mesh, mode):
     deform = laplacianediting.vtkLaplacianDeformationFilter()
-    if mesh_path:
-        reader = READERS[mesh_path.rsplit(".", 1)[-1].lower()]()
-        reader.SetFileName(mesh_path)
-        reader.Update()
-        mesh = reader.GetOutput()
+    if mesh is not None:
         deform.SetInputData(mesh)
-        deform.SetHandleCenter(mesh.GetPoint(0))
-        deform.SetHandleRadius(0.04 * mesh.GetLength())
-        deform.SetROIRadius(0.25 * mesh.GetLength())
+        deform.SetRadiusUnitsToDiagonalFraction()
+        deform.SetHandleRadius(0.03)
+        deform.SetROIRadius(0.15)
     else:
         plane = laplacianediting.vtkBumpyPlaneSource()
         deform.SetInputConnection(plane.GetOutputPort())
@@ -66,7 +135,6 @@ def make_filter(mesh_path, mode):
         deform.SetHandleRadius(0.08)
         deform.SetROIRadius(0.6)
     deform.SetRotationMode(MODES.index(mode))
-    deform.Update()
     return deform
 
 
@@ -92,19 +160,17 @@ def scripted_drag(renderer, interactor, widget, pixels=140):
 
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("mesh", nargs="?", help="OBJ, PLY, STL or VTP file (default: the embedded bumpy plane)")
+    parser.add_argument("mesh", nargs="?",
+                        help="OBJ, PLY, STL, OFF, VTP or VTK file (default: the embedded bumpy plane)")
     parser.add_argument("--mode", choices=MODES, default="explicit", help="rotation mode")
+    parser.add_argument("--up", choices="xyz", default="y", help="the mesh's up axis (default y)")
     parser.add_argument("--offscreen", metavar="PNG", help="play a scripted drag and save a screenshot")
     args = parser.parse_args(argv)
 
-    deform = make_filter(args.mesh, args.mode)
-    mapper = vtkPolyDataMapper()
+    mesh = read_mesh(args.mesh) if args.mesh else None
+    deform = make_filter(mesh, args.mode)
+    mapper = vtkPolyDataMapper()  # default settings: EditRole carries its own colours
     mapper.SetInputConnection(deform.GetOutputPort())
-    mapper.SetLookupTable(role_colors())
-    mapper.SetColorModeToMapScalars()
-    mapper.SetScalarModeToUsePointFieldData()
-    mapper.SelectColorArray("EditRole")
-    mapper.SetScalarRange(0, 3)
     surface = vtkActor()
     surface.SetMapper(mapper)
     surface.GetProperty().SetInterpolationToFlat()
@@ -131,8 +197,13 @@ def main(argv):
     interactor = vtkRenderWindowInteractor()
     interactor.SetRenderWindow(window)
     interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
-    renderer.GetActiveCamera().SetPosition(0, -1, 1)
-    renderer.ResetCamera()
+    if mesh is not None:
+        view = frame_mesh(renderer, mesh, "xyz".index(args.up))
+        deform.SetHandleCenter(mesh.GetPoint(protruding_point(mesh, view)))
+    deform.Update()
+    if mesh is None:
+        renderer.GetActiveCamera().SetPosition(0, -1, 1)
+        renderer.ResetCamera()
 
     widget = laplacianediting.vtkDeformationHandleWidget()
     widget.SetInteractor(interactor)
@@ -147,7 +218,7 @@ def main(argv):
     def on_key(caller, _event):
         key = caller.GetKeySym()
         if key == "m":
-            deform.SetRotationMode((deform.GetRotationMode() + 1) % 3)
+            deform.SetRotationMode((deform.GetRotationMode() + 1) % len(MODES))
         elif key == "r":
             widget.ResetHandle()
         elif key == "c":
