@@ -132,19 +132,25 @@ public:
   }
 
 private:
-  std::int64_t Key(const double p[3], int dx, int dy, int dz) const
+  std::uint64_t Key(const double p[3], int dx, int dy, int dz) const
   {
+    // Cell indices clamped so that no conversion overflows (far cells merely share a bucket),
+    // mixed in unsigned arithmetic.
     const double size = this->Margin > 0.0 ? this->Margin : 1.0;
-    const std::int64_t i = static_cast<std::int64_t>(std::floor(p[0] / size)) + dx;
-    const std::int64_t j = static_cast<std::int64_t>(std::floor(p[1] / size)) + dy;
-    const std::int64_t k = static_cast<std::int64_t>(std::floor(p[2] / size)) + dz;
-    return (i * 73856093) ^ (j * 19349663) ^ (k * 83492791);
+    const int offsets[3] = { dx, dy, dz };
+    std::uint64_t key = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double cell = std::max(-1e15, std::min(1e15, std::floor(p[a] / size))) + offsets[a];
+      key = key * 1000003u ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell));
+    }
+    return key;
   }
 
   const std::vector<std::array<double, 3>>& Seeds;
   double Margin;
   double Box[6];
-  std::unordered_map<std::int64_t, std::vector<const std::array<double, 3>*>> Cells;
+  std::unordered_map<std::uint64_t, std::vector<const std::array<double, 3>*>> Cells;
 };
 }
 
