@@ -28,8 +28,7 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
 {
   this->InteractionState = Outside;
   this->HandleProperty = vtkProperty::New();
-  // Opaque wire spheres: the surface shows through the wires, and nothing depends on how the
-  // renderer orders translucent triangles (a translucent sphere drew as stripes under Mesa).
+  // Opaque wire spheres: the surface under the handle stays visible and sharp.
   this->HandleProperty->SetColor(0.95, 0.85, 0.10); // the paper's yellow handle
   this->HandleProperty->SetRepresentationToWireframe();
   this->HandleProperty->SetLineWidth(1.5);
@@ -338,22 +337,34 @@ void vtkDeformationHandleRepresentation::ReleaseGraphicsResources(vtkWindow* win
   this->ROIActor->ReleaseGraphicsResources(window);
 }
 
+int vtkDeformationHandleRepresentation::RenderActors(
+  int (vtkProp::*render)(vtkViewport*), vtkViewport* viewport)
+{
+  // Each actor draws in the pass its property calls for (applications may make them
+  // translucent), with the representation's property keys: without them, the renderer's
+  // translucent pass (order-independent transparency or depth peeling) draws a translucent
+  // actor with the wrong shader, as horizontal stripes.
+  this->BuildRepresentation();
+  int count = 0;
+  for (vtkActor* actor : { this->RingActor.Get(), this->HandleActor.Get(), this->ROIActor.Get() })
+  {
+    if (actor->GetVisibility())
+    {
+      actor->SetPropertyKeys(this->GetPropertyKeys());
+      count += (actor->*render)(viewport);
+    }
+  }
+  return count;
+}
+
 int vtkDeformationHandleRepresentation::RenderOpaqueGeometry(vtkViewport* viewport)
 {
-  // Each actor draws in the pass its property calls for (applications may make them translucent).
-  this->BuildRepresentation();
-  int count = this->RingActor->RenderOpaqueGeometry(viewport);
-  count += this->HandleActor->RenderOpaqueGeometry(viewport);
-  return count + (this->ROIActor->GetVisibility() ? this->ROIActor->RenderOpaqueGeometry(viewport) : 0);
+  return this->RenderActors(&vtkProp::RenderOpaqueGeometry, viewport);
 }
 
 int vtkDeformationHandleRepresentation::RenderTranslucentPolygonalGeometry(vtkViewport* viewport)
 {
-  this->BuildRepresentation();
-  int count = this->RingActor->RenderTranslucentPolygonalGeometry(viewport);
-  count += this->HandleActor->RenderTranslucentPolygonalGeometry(viewport);
-  return count +
-    (this->ROIActor->GetVisibility() ? this->ROIActor->RenderTranslucentPolygonalGeometry(viewport) : 0);
+  return this->RenderActors(&vtkProp::RenderTranslucentPolygonalGeometry, viewport);
 }
 
 vtkTypeBool vtkDeformationHandleRepresentation::HasTranslucentPolygonalGeometry()

@@ -138,6 +138,8 @@ protected:
   // perpendicular to the view.
   void DisplayToViewPlane(double x, double y, double world[3]);
   void Highlight(bool on);
+  // Renders the visible actors with `render` (an opaque or translucent pass).
+  int RenderActors(int (vtkProp::*render)(vtkViewport*), vtkViewport* viewport);
 
   double Center[3] = { 0.0, 0.0, 0.0 };
   double HandleRadius = 0.05;

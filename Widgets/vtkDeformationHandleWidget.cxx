@@ -35,6 +35,8 @@ struct vtkDeformationHandleWidget::vtkInternals
   // A press outside the handle places the handle if it is released where it went down (within
   // 3 pixels). The interactor style, which orbits meanwhile, holds the interactor's focus, so
   // the moves and the release are watched by a passive observer, which sees them all the same.
+  // A passive observer must not add or remove observers, so it stays on the interactor until
+  // the widget goes or moves to another interactor.
   bool PendingClick = false;
   int PressPosition[2] = { 0, 0 };
   vtkWeakPointer<vtkRenderWindowInteractor> ClickInteractor;
@@ -47,7 +49,20 @@ struct vtkDeformationHandleWidget::vtkInternals
       std::abs(position[1] - this->PressPosition[1]) <= 3;
   }
 
-  void StopWatchingClick()
+  void WatchClicks(vtkRenderWindowInteractor* interactor)
+  {
+    if (this->ClickInteractor == interactor)
+    {
+      return;
+    }
+    this->StopWatchingClicks();
+    this->ClickInteractor = interactor;
+    this->ClickTags[0] = interactor->AddObserver(vtkCommand::MouseMoveEvent, this->ClickObserver);
+    this->ClickTags[1] =
+      interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, this->ClickObserver);
+  }
+
+  void StopWatchingClicks()
   {
     this->PendingClick = false;
     if (this->ClickInteractor)
@@ -84,7 +99,7 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
 
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
 {
-  this->Internals->StopWatchingClick();
+  this->Internals->StopWatchingClicks();
   if (vtkWidgetRepresentation* observed = this->Internals->ObservedRepresentation)
   {
     observed->RemoveObserver(this->Internals->PlaceObserver);
@@ -288,15 +303,10 @@ void vtkDeformationHandleWidget::BeginInteraction(bool resize, bool constrain)
     // Not ours: the interactor style orbits the camera. A release at the same place is a click,
     // which places the handle (ClickAction).
     vtkInternals& internals = *this->Internals;
-    internals.StopWatchingClick();
+    internals.WatchClicks(this->Interactor);
     internals.PendingClick = true;
     internals.PressPosition[0] = x;
     internals.PressPosition[1] = y;
-    internals.ClickInteractor = this->Interactor;
-    internals.ClickTags[0] =
-      this->Interactor->AddObserver(vtkCommand::MouseMoveEvent, internals.ClickObserver);
-    internals.ClickTags[1] =
-      this->Interactor->AddObserver(vtkCommand::LeftButtonReleaseEvent, internals.ClickObserver);
     return;
   }
   using Rep = vtkDeformationHandleRepresentation;
@@ -325,8 +335,8 @@ void vtkDeformationHandleWidget::WatchClick(
     return;
   }
   const bool click = internals.IsClick(position);
-  internals.StopWatchingClick();
-  if (click)
+  internals.PendingClick = false;
+  if (click && self->Enabled) // (the widget may have been switched off since the press)
   {
     self->ClickAction(position[0], position[1]);
   }

@@ -18,7 +18,7 @@
  *   the new handle starts from the edited shape;
  * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis;
  * - vtkWidgetEvent::Resize (Shift + press): on the sphere, resize the region of interest; on the
- *   ring, resize the handle;
+ *   ring, resize the handle; elsewhere as Select;
  * - vtkWidgetEvent::Move and EndSelect (mouse move, release, any modifier).
  * SetTranslation adds a binding and the first that matches wins, so remove one before binding
  * its event anew. For example, Control + drag resizes instead of translating along one axis after

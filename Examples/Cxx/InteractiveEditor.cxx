@@ -57,6 +57,19 @@ void ShowStatus(Editor& editor)
   editor.Status->SetInput(text);
 }
 
+// The status follows the filter: after a key, and after a click or a resize (the region changed).
+void Refresh(Editor& editor)
+{
+  editor.Filter->Update();
+  ShowStatus(editor);
+  editor.Widget->GetInteractor()->Render();
+}
+
+void OnInteractionEnd(vtkObject*, unsigned long, void* data, void*)
+{
+  Refresh(*static_cast<Editor*>(data));
+}
+
 void OnKey(vtkObject* caller, unsigned long, void* data, void*)
 {
   auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
@@ -80,9 +93,7 @@ void OnKey(vtkObject* caller, unsigned long, void* data, void*)
   }
   else
     return;
-  editor.Filter->Update();
-  ShowStatus(editor);
-  interactor->Render();
+  Refresh(editor);
 }
 
 std::string Event(const char* name, double x, double y)
@@ -198,6 +209,10 @@ int main(int argc, char* argv[])
   keys->SetCallback(OnKey);
   keys->SetClientData(&editor);
   interactor->AddObserver(vtkCommand::KeyPressEvent, keys);
+  vtkNew<vtkCallbackCommand> interactionEnd;
+  interactionEnd->SetCallback(OnInteractionEnd);
+  interactionEnd->SetClientData(&editor);
+  widget->AddObserver(vtkCommand::EndInteractionEvent, interactionEnd);
   interactor->Initialize();
   window->Render();
 
@@ -223,9 +238,7 @@ int main(int argc, char* argv[])
   recorder->SetInteractor(interactor);
   recorder->ReadFromInputStringOn();
   recorder->SetInputString(events.c_str());
-  recorder->Play();
-  ShowStatus(editor);
-  window->Render();
+  recorder->Play(); // the release refreshes the status
   double moved[3];
   widget->GetDeformationHandleRepresentation()->GetCurrentCenter(moved);
   const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(center, moved));

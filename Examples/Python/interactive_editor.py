@@ -18,12 +18,13 @@ Needs PYTHONPATH=build/vtk/lib/python3/dist-packages (see the README).
 """
 import argparse
 import math
+import os
 import sys
 
 import vtkmodules.vtkInteractionStyle  # noqa: F401  (interactor styles)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (rendering backend)
-from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonCore import vtkObject, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
@@ -62,7 +63,10 @@ def read_off(path):
     polys = vtkCellArray()
     for words in lines[first + n_points:first + n_points + n_faces]:
         size = int(words[0])
-        polys.InsertNextCell(size, [int(v) for v in words[1:1 + size]])
+        ids = [int(v) for v in words[1:1 + size]]
+        if len(ids) != size or not all(0 <= i < n_points for i in ids):
+            raise ValueError("a face refers to vertices the file does not have")
+        polys.InsertNextCell(size, ids)
     if points.GetNumberOfPoints() != n_points or polys.GetNumberOfCells() != n_faces:
         raise ValueError("the file ends early")
     mesh = vtkPolyData()
@@ -72,15 +76,19 @@ def read_off(path):
 
 
 def read_mesh(path):
-    """The mesh at `path`, or SystemExit with one line saying why not."""
-    extension = path.rsplit(".", 1)[-1].lower() if "." in path else ""
-    if extension not in READERS and extension != "off":
-        raise SystemExit(f"error: unknown mesh format '.{extension}' (use OBJ, PLY, STL, OFF, VTP or VTK)")
+    """The mesh at `path`, or SystemExit with one line saying why not. VTK's own complaints about
+    a bad file (several lines, from the reader, its parser and its executive) are kept quiet."""
     try:
         with open(path, "rb"):
             pass
     except OSError as error:
         raise SystemExit(f"error: cannot open {path}: {error.strerror}")
+    extension = os.path.splitext(os.path.basename(path))[1][1:].lower()
+    if extension not in READERS and extension != "off":
+        problem = f"unknown mesh format '.{extension}'" if extension else f"no file extension on {path}"
+        raise SystemExit(f"error: {problem} (use OBJ, PLY, STL, OFF, VTP or VTK)")
+    warnings = vtkObject.GetGlobalWarningDisplay()
+    vtkObject.GlobalWarningDisplayOff()
     try:
         if extension == "off":
             mesh = read_off(path)
@@ -90,7 +98,11 @@ def read_mesh(path):
             reader.Update()
             mesh = reader.GetOutput()
     except (ValueError, IndexError) as error:
-        raise SystemExit(f"error: cannot read {path}: {error}")
+        raise SystemExit(f"error: cannot read {path} as a .off file: {error}")
+    finally:
+        vtkObject.SetGlobalWarningDisplay(warnings)
+    if mesh.GetNumberOfPoints() == 0:
+        raise SystemExit(f"error: cannot read {path} as a .{extension} file")
     if mesh.GetNumberOfPolys() == 0:
         raise SystemExit(f"error: {path} holds no polygons")
     return mesh
@@ -211,9 +223,12 @@ def main(argv):
     widget.SetSurfaceProp(surface)
     widget.On()
 
-    def show_status():
+    def show_status(*_):
+        """After a key, a click or a resize (the region changed)."""
+        deform.Update()
         status.SetInput(f"rotation mode: {MODES[deform.GetRotationMode()]}   "
                         f"ROI vertices: {deform.GetNumberOfROIVertices()}")
+        interactor.Render()
 
     def on_key(caller, _event):
         key = caller.GetKeySym()
@@ -233,21 +248,17 @@ def main(argv):
             print("saved edited.vtp")
         else:
             return
-        deform.Update()
         show_status()
-        caller.Render()
 
     interactor.AddObserver("KeyPressEvent", on_key)
-    show_status()
+    widget.AddObserver("EndInteractionEvent", show_status)
     interactor.Initialize()
-    window.Render()
+    show_status()
     if not args.offscreen:
         interactor.Start()
         return 0
 
-    distance = scripted_drag(renderer, interactor, widget)
-    show_status()
-    window.Render()
+    distance = scripted_drag(renderer, interactor, widget)  # the release refreshes the status
     grab = vtkWindowToImageFilter()
     grab.SetInput(window)
     png = vtkPNGWriter()

@@ -50,8 +50,8 @@ def main(argv):
 
     after = edited.points()
     moved = [i for i in range(len(points)) if any(after[i] != points[i])]
-    outside = deform.GetOutput().GetPointData().GetArray("EditRole")
-    still = all(outside.GetValue(i) != 0 for i in moved)
+    roles = deform.GetOutput().GetPointData().GetArray("EditRole")
+    still = all(roles.GetValue(i) != 0 for i in moved)  # 0: fixed, outside the region
     # The centre vertex is in the handle: turned about itself, then lifted.
     handle_move = math.dist(points[top], after[top])
     print(f"{len(moved)} of {len(points)} points moved, all in the region: {still}; "
@@ -64,8 +64,12 @@ def main(argv):
         plotter.screenshot(args.offscreen)
         plotter.close()
         print(f"wrote {args.offscreen}")
-    ok = still and abs(handle_move - lift) < 1e-3 * diagonal and deform.GetNumberOfROIVertices() > 10
-    return 0 if ok else 1
+    checks = {"only points in the region moved": still,
+              "the handle moved as asked": abs(handle_move - lift) < 1e-3 * diagonal,
+              "the region is more than the handle": deform.GetNumberOfROIVertices() > 10}
+    failed = [check for check, ok in checks.items() if not ok]
+    print("FAILED: " + "; ".join(failed) if failed else "round trip checked")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
-"""Both interactive editors on files they cannot read: required, exit code 1 and exactly one line
-on stderr that says what is wrong (and, for an unknown format, which formats work).
+"""Both interactive editors on files they cannot read (missing, unknown or no extension, corrupt,
+without polygons): required, exit code 1 and exactly one line on stderr that says what is wrong
+(and, for an unknown format, which formats work).
 
     TestEditorErrors.py CXX_EDITOR PYTHON_EDITOR
 """
@@ -29,6 +30,22 @@ class TestEditorErrors(unittest.TestCase):
     def test_unknown_format(self):
         with tempfile.NamedTemporaryFile(suffix=".xyz") as mesh:
             self.run_editors(mesh.name, ["unknown mesh format '.xyz'", "OBJ, PLY, STL, OFF, VTP or VTK"])
+
+    def test_no_extension(self):
+        with tempfile.TemporaryDirectory(suffix=".obj") as folder:  # the folder's dot is not the file's
+            mesh = os.path.join(folder, "mesh")
+            open(mesh, "w").close()
+            self.run_editors(mesh, ["no file extension on", "OBJ, PLY, STL, OFF, VTP or VTK"])
+
+    def test_corrupt_files(self):
+        # VTK's readers complain in many lines; the editors say it in one.
+        off_with_a_missing_vertex = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"
+        for suffix, text in ((".ply", "not a PLY file\n"), (".stl", "not an STL file\n"),
+                             (".vtp", "<not VTK XML"), (".off", off_with_a_missing_vertex)):
+            with tempfile.NamedTemporaryFile("w", suffix=suffix) as mesh:
+                mesh.write(text)
+                mesh.flush()
+                self.run_editors(mesh.name, ["cannot read", mesh.name])
 
     def test_file_without_polygons(self):
         with tempfile.NamedTemporaryFile("w", suffix=".obj") as mesh:

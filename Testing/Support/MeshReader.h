@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -67,7 +68,10 @@ inline vtkSmartPointer<vtkPolyData> ReadOFF(const std::string& path)
     std::vector<vtkIdType> ids(std::max<vtkIdType>(size, 0));
     for (vtkIdType& id : ids)
     {
-      line >> id;
+      if (!(line >> id) || id < 0 || id >= vertices)
+      {
+        return nullptr; // a face that is not one would crash whoever reads the mesh
+      }
     }
     polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
@@ -77,7 +81,9 @@ inline vtkSmartPointer<vtkPolyData> ReadOFF(const std::string& path)
   return mesh;
 }
 
-/// The mesh, or nullptr with `error` set.
+/// The mesh, or nullptr with `error` set to one line that says why. VTK's own complaints about a
+/// bad file come in several lines from several objects (reader, parser, executive): they are
+/// kept quiet while reading, the line says it.
 inline vtkSmartPointer<vtkPolyData> Read(const std::string& path, std::string& error)
 {
   if (!std::ifstream(path))
@@ -85,33 +91,34 @@ inline vtkSmartPointer<vtkPolyData> Read(const std::string& path, std::string& e
     error = "cannot open " + path;
     return nullptr;
   }
-  std::string extension = path.substr(path.find_last_of('.') + 1);
+  const std::string name = path.substr(path.find_last_of('/') + 1);
+  std::string extension =
+    name.find('.') == std::string::npos ? "" : name.substr(name.rfind('.') + 1);
   std::transform(extension.begin(), extension.end(), extension.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (extension == "obj")
-    mesh = ReadWith<vtkOBJReader>(path);
-  else if (extension == "ply")
-    mesh = ReadWith<vtkPLYReader>(path);
-  else if (extension == "stl")
-    mesh = ReadWith<vtkSTLReader>(path);
-  else if (extension == "off")
-    mesh = ReadOFF(path);
-  else if (extension == "vtp")
-    mesh = ReadWith<vtkXMLPolyDataReader>(path);
-  else if (extension == "vtk")
-    mesh = ReadWith<vtkPolyDataReader>(path);
-  else
+  using Reader = vtkSmartPointer<vtkPolyData> (*)(const std::string&);
+  const std::map<std::string, Reader> readers = { { "obj", &ReadWith<vtkOBJReader> },
+    { "ply", &ReadWith<vtkPLYReader> }, { "stl", &ReadWith<vtkSTLReader> }, { "off", &ReadOFF },
+    { "vtp", &ReadWith<vtkXMLPolyDataReader> }, { "vtk", &ReadWith<vtkPolyDataReader> } };
+  const auto reader = readers.find(extension);
+  if (reader == readers.end())
   {
-    error = "unknown mesh format '." + extension + "' (use OBJ, PLY, STL, OFF, VTP or VTK)";
+    error = (extension.empty() ? "no file extension on " + path
+                               : "unknown mesh format '." + extension + "'") +
+      " (use OBJ, PLY, STL, OFF, VTP or VTK)";
     return nullptr;
   }
-  if (!mesh || mesh->GetNumberOfPolys() == 0)
-  {
+  const int warnings = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  vtkSmartPointer<vtkPolyData> mesh = reader->second(path);
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  if (!mesh || mesh->GetNumberOfPoints() == 0)
+    error = "cannot read " + path + " as a ." + extension + " file";
+  else if (mesh->GetNumberOfPolys() == 0)
     error = path + " holds no polygons";
-    return nullptr;
-  }
-  return mesh;
+  else
+    return mesh;
+  return nullptr;
 }
 }
 
