@@ -309,9 +309,12 @@ TEST(AsRigidAsPossible, HandlesLandOnTheirTargets)
 
 TEST(AsRigidAsPossible, ResolvingAConvergedResultLeavesItInPlace)
 {
-  // A 175-degree twist run to convergence, then solved again from its own positions with no
-  // rotation history (as after the editor's state is rebuilt). Required: the second solve
-  // moves no vertex by more than 1e-8 and does not raise the energy.
+  // A 175-degree twist run until its energy stops falling, then solved again from its own
+  // positions with no rotation history (as after the editor's state is rebuilt). Seeding the
+  // rotations from the identity there once drifted to a worse minimum, 2.9e-2 away.
+  // Required: the re-solve does not raise the energy and moves no vertex by more than 1e-7 of
+  // the unit tube. An energy flat to double precision fixes positions only to about
+  // sqrt(eps) = 1.5e-8 (ten more iterations with the rotation history kept move 1.8e-8 too).
   TubeEdit edit;
   const AffineMap twist = Twist(175.0);
   ArapIterate result = edit.Solver.InitialGuess({ twist });
@@ -323,8 +326,10 @@ TEST(AsRigidAsPossible, ResolvingAConvergedResultLeavesItInPlace)
   result.Rotations.clear();
   const ArapResult again = edit.Solver.Solve({ twist }, result, options);
   const double moved = (result.Points - converged).cwiseAbs().maxCoeff();
-  std::printf("re-solve of a converged 175-degree twist: moved %.2e, energy %.6g -> %.6g\n",
-    moved, first.Energy, again.Energy);
-  EXPECT_LT(moved, 1e-8);
-  EXPECT_LE(again.Energy, first.Energy * (1.0 + 1e-9));
+  std::printf("re-solve of a converged 175-degree twist (%d iterations): moved %.2e, "
+              "energy %.12g -> %.12g\n",
+    first.Iterations, moved, first.Energy, again.Energy);
+  EXPECT_LT(first.Iterations, options.MaximumIterations);
+  EXPECT_LT(moved, 1e-7);
+  EXPECT_LE(again.Energy, first.Energy * (1.0 + 1e-12));
 }
