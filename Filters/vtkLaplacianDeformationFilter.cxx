@@ -11,6 +11,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLinearTransform.h"
+#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -66,6 +67,27 @@ static_assert(static_cast<int>(le::VertexRole::Fixed) == vtkLaplacianDeformation
 
 namespace
 {
+// The roles' colours as in the paper's Fig. 2 (fixed grey, anchors red, free green, handle
+// yellow), as an indexed table, annotated with the roles' names for colour legends.
+vtkSmartPointer<vtkLookupTable> NewRoleColors()
+{
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  const struct
+  {
+    const char* Name;
+    double Color[3];
+  } roles[] = { { "fixed", { 0.75, 0.75, 0.75 } }, { "anchor", { 0.85, 0.20, 0.15 } },
+    { "free", { 0.35, 0.75, 0.35 } }, { "handle", { 0.95, 0.85, 0.10 } } };
+  table->IndexedLookupOn();
+  table->SetNumberOfTableValues(4);
+  for (int role = 0; role < 4; ++role)
+  {
+    table->SetTableValue(role, roles[role].Color[0], roles[role].Color[1], roles[role].Color[2]);
+    table->SetAnnotation(vtkVariant(role), roles[role].Name);
+  }
+  return table;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double SecondsSince(Clock::time_point start)
@@ -621,6 +643,7 @@ void vtkLaplacianDeformationFilter::AddEditRoles(vtkPolyData* output, vtkDataArr
   {
     return;
   }
+  roles->SetLookupTable(this->RoleColors ? NewRoleColors() : nullptr);
   vtkPointData* pointData = output->GetPointData();
   pointData->AddArray(roles);
   if (!pointData->GetScalars())
@@ -732,6 +755,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB\n";
   os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
+  os << indent << "RoleColors: " << (this->RoleColors ? "On" : "Off") << "\n";
   os << indent << "NumberOfHandleTransforms: " << this->Internals->HandleTransforms.size() << "\n";
   os << indent << "NumberOfCommits: " << this->Internals->Commits.size() << "\n";
   os << indent << "Last update:\n";

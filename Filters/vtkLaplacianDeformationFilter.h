@@ -351,14 +351,22 @@ public:
   vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
 
   /**
-   * Add the EditRole point array (0 fixed, 1 anchor, 2 free, 3 handle), a vtkSignedCharArray
-   * carrying an indexed lookup table of the paper's Fig. 2 colours; it becomes the active
-   * scalars where the input has none, so a default vtkPolyDataMapper shows the roles.
-   * Default on.
+   * Add the EditRole point array (0 fixed, 1 anchor, 2 free, 3 handle), a vtkSignedCharArray;
+   * it becomes the active scalars where the input has none. Default on.
    */
   vtkSetMacro(GenerateEditRoles, vtkTypeBool);
   vtkGetMacro(GenerateEditRoles, vtkTypeBool);
   vtkBooleanMacro(GenerateEditRoles, vtkTypeBool);
+
+  /**
+   * Give the EditRole array an indexed lookup table of the paper's Fig. 2 colours (fixed grey,
+   * anchors red, free green, handle yellow), so that a default vtkPolyDataMapper shows the roles.
+   * A mapper colours by an array's own table in preference to its own, so turn this off where
+   * the application manages colour maps (the ParaView plugin does). Default on.
+   */
+  vtkSetMacro(RoleColors, vtkTypeBool);
+  vtkGetMacro(RoleColors, vtkTypeBool);
+  vtkBooleanMacro(RoleColors, vtkTypeBool);
 
   /**
    * The transform of handle group 0, applied to the handle's rest positions. nullptr (the
@@ -486,7 +494,7 @@ protected:
 
   /**
    * Adds the EditRole array to the output when GenerateEditRoles is on, as the active scalars
-   * where the output has none.
+   * where the output has none, with the Fig. 2 colours when RoleColors is on.
    */
   void AddEditRoles(vtkPolyData* output, vtkDataArray* roles);
 
@@ -516,6 +524,7 @@ protected:
   double MaximumFactorMemory = 0.0;
   vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;
+  vtkTypeBool RoleColors = 1;
 
   int NumberOfFactorizations = 0;
   int NumberOfFactorizationAttempts = 0;

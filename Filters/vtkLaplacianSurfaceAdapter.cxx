@@ -6,7 +6,6 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkLinearTransform.h"
-#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
@@ -23,31 +22,6 @@
 #include <unordered_map>
 
 namespace le = LaplacianEditing;
-
-namespace
-{
-// The roles' colours as in the paper's Fig. 2 (fixed grey, anchors red, free green, handle
-// yellow), as an indexed table the array carries: a plain vtkPolyDataMapper colours by it with
-// its default settings.
-vtkSmartPointer<vtkLookupTable> RoleColors()
-{
-  auto table = vtkSmartPointer<vtkLookupTable>::New();
-  const struct
-  {
-    const char* Name;
-    double Color[3];
-  } roles[] = { { "fixed", { 0.75, 0.75, 0.75 } }, { "anchor", { 0.85, 0.20, 0.15 } },
-    { "free", { 0.35, 0.75, 0.35 } }, { "handle", { 0.95, 0.85, 0.10 } } };
-  table->IndexedLookupOn();
-  table->SetNumberOfTableValues(4);
-  for (int role = 0; role < 4; ++role)
-  {
-    table->SetTableValue(role, roles[role].Color[0], roles[role].Color[1], roles[role].Color[2]);
-    table->SetAnnotation(vtkVariant(role), roles[role].Name);
-  }
-  return table;
-}
-}
 
 vtkIdType vtkLaplacianSurfaceAdapter::FindNearestCorner(vtkPolyData* input, const double point[3])
 {
@@ -372,7 +346,6 @@ vtkSmartPointer<vtkSignedCharArray> vtkLaplacianSurfaceAdapter::NewRoles(vtkIdTy
 {
   auto roles = vtkSmartPointer<vtkSignedCharArray>::New();
   roles->SetName("EditRole");
-  roles->SetLookupTable(RoleColors());
   roles->SetNumberOfTuples(count);
   roles->FillValue(static_cast<signed char>(le::VertexRole::Fixed));
   return roles;

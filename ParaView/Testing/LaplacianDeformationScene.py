@@ -24,12 +24,22 @@ def show(deform, view=None):
     view.OrientationAxesVisibility = 0
     display = Show(deform, view)
     display.ColorArrayName = ["POINTS", "EditRole"]
+    role_colors(display)
     view.CameraPosition = [2.5, -2.0, 1.2]
     view.CameraFocalPoint = [0.0, 0.0, 0.2]
     view.CameraViewUp = [0.0, 0.0, 1.0]
     ResetCamera(view)
     Render(view)
     return view
+
+
+def role_colors(display):
+    """Colours `display` by EditRole with a categorical map of the paper's Fig. 2 colours."""
+    lut = simple.GetColorTransferFunction("EditRole")
+    lut.InterpretValuesAsCategories = 1
+    lut.Annotations = ["0", "fixed", "1", "anchor", "2", "free", "3", "handle"]
+    lut.IndexedColors = [0.75, 0.75, 0.75, 0.85, 0.20, 0.15, 0.35, 0.75, 0.35, 0.95, 0.85, 0.10]
+    display.LookupTable = lut
 
 
 def compare_with_baseline(image, baseline, threshold):

@@ -4,6 +4,7 @@
 #include "MeshReader.h"
 
 #include "vtkErrorCode.h"
+#include "vtkLookupTable.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSignedCharArray.h"
@@ -91,6 +92,31 @@ TEST(Feedback, TheQuickStartDrawsNoWarning)
   EXPECT_EQ(warnings.Messages, "");
   EXPECT_EQ(errors.Messages, "");
   EXPECT_EQ(filter->GetErrorCode(), vtkErrorCode::NoError);
+}
+
+TEST(Feedback, RolesAreTheActiveScalarsWithTheirOwnColoursUnlessTurnedOff)
+{
+  auto filter = QuickStart(Bunny());
+  filter->Update();
+  vtkPointData* pointData = filter->GetOutput()->GetPointData();
+  ASSERT_NE(pointData->GetScalars(), nullptr);
+  EXPECT_STREQ(pointData->GetScalars()->GetName(), "EditRole");
+  auto* table = vtkLookupTable::SafeDownCast(pointData->GetScalars()->GetLookupTable());
+  ASSERT_NE(table, nullptr);
+  EXPECT_TRUE(table->GetIndexedLookup());
+  double handle[4];
+  table->GetIndexedColor(vtkLaplacianDeformationFilter::ROLE_HANDLE, handle);
+  EXPECT_GT(handle[0], 0.9); // yellow, as the paper's handle
+  EXPECT_GT(handle[1], 0.8);
+  EXPECT_LT(handle[2], 0.2);
+  const vtkIdType anchor = table->GetAnnotatedValueIndex(vtkLaplacianDeformationFilter::ROLE_ANCHOR);
+  EXPECT_EQ(table->GetAnnotation(anchor), "anchor");
+
+  // An application with its own colour maps (ParaView) turns the table off: a mapper would
+  // prefer it to the application's.
+  filter->RoleColorsOff();
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray("EditRole")->GetLookupTable(), nullptr);
 }
 
 namespace
