@@ -1,10 +1,13 @@
 #include "vtkDeformationHandleRepresentation.h"
 
 #include "vtkActor.h"
+#include "vtkAssemblyNode.h"
+#include "vtkAssemblyPath.h"
 #include "vtkCamera.h"
 #include "vtkCellPicker.h"
 #include "vtkCommand.h"
 #include "vtkInteractorObserver.h"
+#include "vtkLineSource.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -20,6 +23,7 @@
 #include "vtkWindow.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 vtkStandardNewMacro(vtkDeformationHandleRepresentation);
@@ -36,23 +40,28 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
   this->SelectedHandleProperty->DeepCopy(this->HandleProperty);
   this->SelectedHandleProperty->SetColor(1.0, 0.55, 0.0);
   this->SelectedHandleProperty->SetLineWidth(2.5);
-  this->RingProperty = vtkProperty::New();
-  this->RingProperty->SetColor(0.2, 0.45, 0.95);
+  // The frame's rings in the usual axis colours; the view ring a lighter blue.
+  double ringColors[4][3] = { { 0.9, 0.2, 0.2 }, { 0.25, 0.75, 0.25 }, { 0.2, 0.35, 0.95 },
+    { 0.45, 0.7, 1.0 } };
+  for (int axis = AxisX; axis <= ViewAxis; ++axis)
+  {
+    this->RingProperties[axis]->SetColor(ringColors[axis]);
+    this->RingSources[axis]->SetNumberOfSides(64);
+    this->RingSources[axis]->GeneratePolygonOff();
+    this->RingSources[axis]->GeneratePolylineOn();
+    this->RingTubes[axis]->SetInputConnection(this->RingSources[axis]->GetOutputPort());
+    this->RingTubes[axis]->SetNumberOfSides(8);
+    this->RingMappers[axis]->SetInputConnection(this->RingTubes[axis]->GetOutputPort());
+    this->RingActors[axis]->SetMapper(this->RingMappers[axis]);
+    this->RingActors[axis]->SetProperty(this->RingProperties[axis]);
+    this->Picker->AddPickList(this->RingActors[axis]);
+  }
 
   this->HandleSource->SetThetaResolution(24);
   this->HandleSource->SetPhiResolution(12);
   this->HandleMapper->SetInputConnection(this->HandleSource->GetOutputPort());
   this->HandleActor->SetMapper(this->HandleMapper);
   this->HandleActor->SetProperty(this->HandleProperty);
-
-  this->RingSource->SetNumberOfSides(64);
-  this->RingSource->GeneratePolygonOff();
-  this->RingSource->GeneratePolylineOn();
-  this->RingTube->SetInputConnection(this->RingSource->GetOutputPort());
-  this->RingTube->SetNumberOfSides(8);
-  this->RingMapper->SetInputConnection(this->RingTube->GetOutputPort());
-  this->RingActor->SetMapper(this->RingMapper);
-  this->RingActor->SetProperty(this->RingProperty);
 
   this->ROISource->SetThetaResolution(24);
   this->ROISource->SetPhiResolution(12);
@@ -63,13 +72,14 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
 
   this->ROIActor->VisibilityOff();
 
-  for (vtkCellPicker* picker : { this->HandlePicker.Get(), this->RingPicker.Get() })
-  {
-    picker->SetTolerance(0.005);
-    picker->PickFromListOn();
-  }
-  this->HandlePicker->AddPickList(this->HandleActor);
-  this->RingPicker->AddPickList(this->RingActor);
+  this->AxisMapper->SetInputConnection(this->AxisSource->GetOutputPort());
+  this->AxisActor->SetMapper(this->AxisMapper);
+  this->AxisActor->GetProperty()->SetLineWidth(2.0);
+  this->AxisActor->VisibilityOff();
+
+  this->Picker->SetTolerance(0.005);
+  this->Picker->PickFromListOn();
+  this->Picker->AddPickList(this->HandleActor);
   this->UpdateTransform();
 }
 
@@ -77,7 +87,31 @@ vtkDeformationHandleRepresentation::~vtkDeformationHandleRepresentation()
 {
   this->HandleProperty->Delete();
   this->SelectedHandleProperty->Delete();
-  this->RingProperty->Delete();
+}
+
+vtkProperty* vtkDeformationHandleRepresentation::GetRingProperty(int axis)
+{
+  return axis >= AxisX && axis <= ViewAxis ? this->RingProperties[axis].Get() : nullptr;
+}
+
+void vtkDeformationHandleRepresentation::GetFrameAxis(int axis, double direction[3])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    direction[i] = this->Rotation[i][axis];
+  }
+}
+
+void vtkDeformationHandleRepresentation::GetRotationAxisDirection(int axis, double direction[3])
+{
+  if (axis == ViewAxis)
+  {
+    this->Renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
+  }
+  else
+  {
+    this->GetFrameAxis(axis, direction);
+  }
 }
 
 vtkTransform* vtkDeformationHandleRepresentation::GetTransform()
@@ -154,9 +188,31 @@ void vtkDeformationHandleRepresentation::RegisterPickers()
   vtkPickingManager* manager = this->GetPickingManager();
   if (manager && this->PickingManaged)
   {
-    manager->AddPicker(this->HandlePicker, this);
-    manager->AddPicker(this->RingPicker, this);
+    manager->AddPicker(this->Picker, this);
   }
+}
+
+bool vtkDeformationHandleRepresentation::DisplayToPlane(
+  double x, double y, const double normal[3], double world[3])
+{
+  // The ray through (x, y), from the near to the far clipping plane, meets the plane.
+  double nearPoint[4], farPoint[4], center[3], ray[3], toCenter[3];
+  vtkInteractorObserver::ComputeDisplayToWorld(this->Renderer, x, y, 0.0, nearPoint);
+  vtkInteractorObserver::ComputeDisplayToWorld(this->Renderer, x, y, 1.0, farPoint);
+  this->GetCurrentCenter(center);
+  vtkMath::Subtract(farPoint, nearPoint, ray);
+  vtkMath::Subtract(center, nearPoint, toCenter);
+  const double along = vtkMath::Dot(ray, normal);
+  if (std::abs(along) < 1e-3 * vtkMath::Norm(ray) * vtkMath::Norm(normal))
+  {
+    return false;
+  }
+  const double t = vtkMath::Dot(toCenter, normal) / along;
+  for (int i = 0; i < 3; ++i)
+  {
+    world[i] = nearPoint[i] + t * ray[i];
+  }
+  return true;
 }
 
 void vtkDeformationHandleRepresentation::DisplayToViewPlane(double x, double y, double world[3])
@@ -175,19 +231,36 @@ int vtkDeformationHandleRepresentation::ComputeInteractionState(int X, int Y, in
     return this->InteractionState = Outside;
   }
   this->BuildRepresentation(); // pick what is drawn now
-  if (this->GetAssemblyPath(X, Y, 0.0, this->HandlePicker))
+  // One picker for the sphere and the rings: the picking manager weighs the whole handle
+  // against other widgets. A ring seen edge-on is a line across the sphere, so the inner part
+  // of the sphere's disc on screen belongs to the sphere whatever is picked in front of it.
+  vtkAssemblyPath* path = this->GetAssemblyPath(X, Y, 0.0, this->Picker);
+  if (!path)
   {
-    this->InteractionState = OnHandle;
+    return this->InteractionState = Outside;
   }
-  else if (this->GetAssemblyPath(X, Y, 0.0, this->RingPicker))
+  vtkProp* picked = path->GetFirstNode()->GetViewProp();
+  double center[3], centerDisplay[3], rim[3], rimDisplay[3], up[3];
+  this->GetCurrentCenter(center);
+  this->Renderer->GetActiveCamera()->GetViewUp(up);
+  vtkMath::Normalize(up);
+  for (int i = 0; i < 3; ++i)
   {
-    this->InteractionState = OnRing;
+    rim[i] = center[i] + this->HandleRadius * up[i];
   }
-  else
+  vtkInteractorObserver::ComputeWorldToDisplay(this->Renderer, center[0], center[1], center[2], centerDisplay);
+  vtkInteractorObserver::ComputeWorldToDisplay(this->Renderer, rim[0], rim[1], rim[2], rimDisplay);
+  const double radius = std::hypot(rimDisplay[0] - centerDisplay[0], rimDisplay[1] - centerDisplay[1]);
+  const bool inner = std::hypot(X - centerDisplay[0], Y - centerDisplay[1]) < 0.6 * radius;
+  if (picked == this->HandleActor || inner)
   {
-    this->InteractionState = Outside;
+    return this->InteractionState = OnHandle;
   }
-  return this->InteractionState;
+  for (int axis = AxisX; axis <= ViewAxis; ++axis)
+  {
+    this->RotationAxis = picked == this->RingActors[axis] ? axis : this->RotationAxis;
+  }
+  return this->InteractionState = OnRing;
 }
 
 void vtkDeformationHandleRepresentation::StartWidgetInteraction(double eventPosition[2])
@@ -199,6 +272,12 @@ void vtkDeformationHandleRepresentation::StartWidgetInteraction(double eventPosi
   for (int r = 0; r < 3; ++r)
   {
     std::copy(this->Rotation[r], this->Rotation[r] + 3, this->StartRotation[r]);
+  }
+  this->GetRotationAxisDirection(this->RotationAxis, this->StartAxis);
+  vtkMath::Normalize(this->StartAxis);
+  if (this->InteractionState == Rotating)
+  {
+    this->StartRingTangent();
   }
   this->Highlight(true);
   this->ROIActor->SetVisibility(this->InteractionState == ResizingROI);
@@ -218,30 +297,52 @@ void vtkDeformationHandleRepresentation::WidgetInteraction(double eventPosition[
       vtkMath::Subtract(world, this->StartWorld, motion);
       if (this->ConstrainToAxis)
       {
-        // Keep the component the motion follows most.
-        const int axis = static_cast<int>(std::max_element(motion, motion + 3,
-                           [](double a, double b) { return std::abs(a) < std::abs(b); }) -
-          motion);
-        for (int i = 0; i < 3; ++i)
+        // Along the frame axis the motion follows most, drawn while the drag lasts.
+        int best = AxisX;
+        double along = 0.0, direction[3];
+        for (int axis = AxisX; axis <= AxisZ; ++axis)
         {
-          motion[i] = i == axis ? motion[i] : 0.0;
+          this->GetFrameAxis(axis, direction);
+          const double component = vtkMath::Dot(motion, direction);
+          if (std::abs(component) > std::abs(along))
+          {
+            along = component;
+            best = axis;
+          }
         }
+        this->GetFrameAxis(best, direction);
+        vtkMath::MultiplyScalar(direction, along);
+        std::copy(direction, direction + 3, motion);
+        this->GetFrameAxis(best, direction);
+        this->AxisActor->GetProperty()->SetColor(this->RingProperties[best]->GetColor());
+        this->ShowAxis(direction);
       }
       vtkMath::Add(this->StartTranslation, motion, this->Translation);
       break;
     }
     case Rotating:
     {
-      // The angle swept around the centre on screen, about the view direction.
-      double display[3];
-      vtkInteractorObserver::ComputeWorldToDisplay(
-        this->Renderer, center[0], center[1], center[2], display);
-      const double from = std::atan2(this->StartPosition[1] - display[1], this->StartPosition[0] - display[0]);
-      const double to = std::atan2(eventPosition[1] - display[1], eventPosition[0] - display[0]);
-      double axis[3];
-      this->Renderer->GetActiveCamera()->GetDirectionOfProjection(axis);
+      // A ring seen well: the angle the cursor swept about the axis in the ring's plane since
+      // the drag started. A ring seen nearly edge-on: the cursor's motion along the ring's
+      // tangent on screen, a radian per projected ring radius.
+      double angle = 0.0, now[3], from[3], to[3], cross[3];
+      if (this->TangentPerRadian[0] != 0.0 || this->TangentPerRadian[1] != 0.0)
+      {
+        const double dx = eventPosition[0] - this->StartPosition[0];
+        const double dy = eventPosition[1] - this->StartPosition[1];
+        angle = (dx * this->TangentPerRadian[0] + dy * this->TangentPerRadian[1]) /
+          (this->TangentPerRadian[0] * this->TangentPerRadian[0] +
+            this->TangentPerRadian[1] * this->TangentPerRadian[1]);
+      }
+      else if (this->DisplayToPlane(eventPosition[0], eventPosition[1], this->StartAxis, now))
+      {
+        vtkMath::Subtract(this->StartWorld, center, from);
+        vtkMath::Subtract(now, center, to);
+        vtkMath::Cross(from, to, cross);
+        angle = std::atan2(vtkMath::Dot(cross, this->StartAxis), vtkMath::Dot(from, to));
+      }
       vtkNew<vtkTransform> turn;
-      turn->RotateWXYZ(vtkMath::DegreesFromRadians(from - to), axis);
+      turn->RotateWXYZ(vtkMath::DegreesFromRadians(angle), this->StartAxis);
       double turnMatrix[3][3];
       for (int r = 0; r < 3; ++r)
       {
@@ -272,7 +373,70 @@ void vtkDeformationHandleRepresentation::EndWidgetInteraction(double[2])
 {
   this->Highlight(false);
   this->ROIActor->VisibilityOff();
+
+  this->AxisMapper->SetInputConnection(this->AxisSource->GetOutputPort());
+  this->AxisActor->SetMapper(this->AxisMapper);
+  this->AxisActor->GetProperty()->SetLineWidth(2.0);
+  this->AxisActor->VisibilityOff();
+  this->AxisActor->VisibilityOff();
   this->InteractionState = Outside;
+}
+
+void vtkDeformationHandleRepresentation::StartRingTangent()
+{
+  this->TangentPerRadian[0] = this->TangentPerRadian[1] = 0.0;
+  double view[3], center[3];
+  this->GetRotationAxisDirection(ViewAxis, view);
+  vtkMath::Normalize(view);
+  const bool edgeOn = std::abs(vtkMath::Dot(view, this->StartAxis)) < 0.25;
+  if (!edgeOn &&
+    this->DisplayToPlane(this->StartPosition[0], this->StartPosition[1], this->StartAxis, this->StartWorld))
+  {
+    return; // the angle is measured in the ring's plane
+  }
+  // The grabbed ring point: the cursor's point in the view plane, brought onto the ring; its
+  // tangent, a ring radius long, on screen.
+  this->GetCurrentCenter(center);
+  double radial[3], tangent[3], end[3], centerDisplay[3], endDisplay[3];
+  vtkMath::Subtract(this->StartWorld, center, radial);
+  const double off = vtkMath::Dot(radial, this->StartAxis);
+  for (int i = 0; i < 3; ++i)
+  {
+    radial[i] -= off * this->StartAxis[i];
+  }
+  if (vtkMath::Normalize(radial) == 0.0)
+  {
+    vtkMath::Cross(this->StartAxis, view, radial);
+    vtkMath::Normalize(radial);
+  }
+  vtkMath::Cross(this->StartAxis, radial, tangent);
+  const double ring = 1.15 * this->HandleRadius;
+  for (int i = 0; i < 3; ++i)
+  {
+    end[i] = center[i] + ring * tangent[i];
+  }
+  vtkInteractorObserver::ComputeWorldToDisplay(this->Renderer, center[0], center[1], center[2], centerDisplay);
+  vtkInteractorObserver::ComputeWorldToDisplay(this->Renderer, end[0], end[1], end[2], endDisplay);
+  this->TangentPerRadian[0] = endDisplay[0] - centerDisplay[0];
+  this->TangentPerRadian[1] = endDisplay[1] - centerDisplay[1];
+  if (std::hypot(this->TangentPerRadian[0], this->TangentPerRadian[1]) < 1.0)
+  {
+    this->TangentPerRadian[0] = this->TangentPerRadian[1] = 0.0; // no direction on screen
+  }
+}
+
+void vtkDeformationHandleRepresentation::ShowAxis(const double direction[3])
+{
+  double center[3], ends[2][3];
+  this->GetCurrentCenter(center);
+  for (int i = 0; i < 3; ++i)
+  {
+    ends[0][i] = center[i] - this->ROIRadius * direction[i];
+    ends[1][i] = center[i] + this->ROIRadius * direction[i];
+  }
+  this->AxisSource->SetPoint1(ends[0]);
+  this->AxisSource->SetPoint2(ends[1]);
+  this->AxisActor->VisibilityOn();
 }
 
 void vtkDeformationHandleRepresentation::Highlight(bool on)
@@ -297,15 +461,20 @@ void vtkDeformationHandleRepresentation::BuildRepresentation()
   camera->GetDirectionOfProjection(normal);
   this->HandleSource->SetCenter(center);
   this->HandleSource->SetRadius(this->HandleRadius);
-  this->RingSource->SetCenter(center);
-  this->RingSource->SetNormal(normal);
-  this->RingSource->SetRadius(1.4 * this->HandleRadius);
-  this->RingTube->SetRadius(0.08 * this->HandleRadius);
+  for (int axis = AxisX; axis <= ViewAxis; ++axis)
+  {
+    double ringNormal[3];
+    this->GetRotationAxisDirection(axis, ringNormal);
+    this->RingSources[axis]->SetCenter(center);
+    this->RingSources[axis]->SetNormal(ringNormal);
+    this->RingSources[axis]->SetRadius((axis == ViewAxis ? 1.4 : 1.15) * this->HandleRadius);
+    this->RingTubes[axis]->SetRadius(0.06 * this->HandleRadius);
+    this->RingTubes[axis]->Update();
+  }
   this->ROISource->SetCenter(center);
   this->ROISource->SetRadius(this->ROIRadius);
   // The pickers read the mappers' inputs: bring them up to date now, not at the next render.
   this->HandleSource->Update();
-  this->RingTube->Update();
   this->ROISource->Update();
   this->BuildTime.Modified();
 }
@@ -325,16 +494,18 @@ double* vtkDeformationHandleRepresentation::GetBounds()
 
 void vtkDeformationHandleRepresentation::GetActors(vtkPropCollection* actors)
 {
-  actors->AddItem(this->HandleActor);
-  actors->AddItem(this->RingActor);
-  actors->AddItem(this->ROIActor);
+  for (vtkActor* actor : this->Actors())
+  {
+    actors->AddItem(actor);
+  }
 }
 
 void vtkDeformationHandleRepresentation::ReleaseGraphicsResources(vtkWindow* window)
 {
-  this->HandleActor->ReleaseGraphicsResources(window);
-  this->RingActor->ReleaseGraphicsResources(window);
-  this->ROIActor->ReleaseGraphicsResources(window);
+  for (vtkActor* actor : this->Actors())
+  {
+    actor->ReleaseGraphicsResources(window);
+  }
 }
 
 int vtkDeformationHandleRepresentation::RenderActors(
@@ -346,7 +517,7 @@ int vtkDeformationHandleRepresentation::RenderActors(
   // actor with the wrong shader, as horizontal stripes.
   this->BuildRepresentation();
   int count = 0;
-  for (vtkActor* actor : { this->RingActor.Get(), this->HandleActor.Get(), this->ROIActor.Get() })
+  for (vtkActor* actor : this->Actors())
   {
     if (actor->GetVisibility())
     {
@@ -367,11 +538,17 @@ int vtkDeformationHandleRepresentation::RenderTranslucentPolygonalGeometry(vtkVi
   return this->RenderActors(&vtkProp::RenderTranslucentPolygonalGeometry, viewport);
 }
 
+std::array<vtkActor*, 7> vtkDeformationHandleRepresentation::Actors()
+{
+  return { this->RingActors[AxisX], this->RingActors[AxisY], this->RingActors[AxisZ],
+    this->RingActors[ViewAxis], this->HandleActor, this->ROIActor, this->AxisActor };
+}
+
 vtkTypeBool vtkDeformationHandleRepresentation::HasTranslucentPolygonalGeometry()
 {
-  return this->RingActor->HasTranslucentPolygonalGeometry() ||
-    this->HandleActor->HasTranslucentPolygonalGeometry() ||
-    (this->ROIActor->GetVisibility() && this->ROIActor->HasTranslucentPolygonalGeometry());
+  const std::array<vtkActor*, 7> actors = this->Actors();
+  return std::any_of(actors.begin(), actors.end(),
+    [](vtkActor* actor) { return actor->GetVisibility() && actor->HasTranslucentPolygonalGeometry(); });
 }
 
 void vtkDeformationHandleRepresentation::PrintSelf(ostream& os, vtkIndent indent)
@@ -386,5 +563,5 @@ void vtkDeformationHandleRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "ConstrainToAxis: " << this->ConstrainToAxis << "\n";
   os << indent << "HandleProperty: " << this->HandleProperty << "\n";
   os << indent << "SelectedHandleProperty: " << this->SelectedHandleProperty << "\n";
-  os << indent << "RingProperty: " << this->RingProperty << "\n";
+  os << indent << "RotationAxis: " << this->RotationAxis << "\n";
 }

@@ -3,15 +3,20 @@
  * @brief   the handle of a Laplacian edit: a sphere to drag, a ring to turn
  *
  * The representation draws the handle of a vtkLaplacianDeformationFilter edit where the handle
- * transform puts it: a wire sphere of the handle radius, and a ring around it,
- * perpendicular to the view. While the ROI is being resized it also shows the ROI as a
- * wireframe sphere. Its transform, GetTransform(), is what the filter consumes: a rotation
- * about the handle centre followed by a translation.
+ * transform puts it: a wire sphere of the handle radius; around it, a light blue ring
+ * perpendicular to the view, and three rings in the handle's own frame (red, green and blue
+ * about its x, y and z axes, which start as the world's and turn with the handle). While the
+ * ROI is being resized it also shows the ROI as a wireframe sphere. Its transform,
+ * GetTransform(), is what the filter consumes: a rotation about the handle centre followed by
+ * a translation.
  *
- * Interaction states: dragging the sphere translates the handle in the view plane (along the
- * dominant axis of the motion when ConstrainToAxis is on); dragging the ring rotates it about
- * the view direction; ResizingROI and ResizingHandle set the radii from the distance between
- * the handle centre and the cursor, in the view plane.
+ * Interaction states: dragging the sphere translates the handle in the view plane; with
+ * ConstrainToAxis on, along the handle's frame axis the motion follows most, drawn as a line
+ * through the handle while the drag lasts. Dragging a ring rotates the handle about the ring's
+ * axis (GetRotationAxis): the angle is the one the cursor sweeps in the ring's plane, so a
+ * turn about an axis at any angle to the view follows the cursor. ResizingROI and
+ * ResizingHandle set the radii from the distance between the handle centre and the cursor, in
+ * the view plane.
  *
  * @sa vtkDeformationHandleWidget vtkLaplacianDeformationFilter
  */
@@ -22,8 +27,11 @@
 #include "vtkNew.h"                           // for vtkNew
 #include "vtkWidgetRepresentation.h"
 
+#include <array> // for std::array
+
 class vtkActor;
 class vtkCellPicker;
+class vtkLineSource;
 class vtkPolyDataMapper;
 class vtkProperty;
 class vtkRegularPolygonSource;
@@ -38,6 +46,14 @@ public:
   static vtkDeformationHandleRepresentation* New();
   vtkTypeMacro(vtkDeformationHandleRepresentation, vtkWidgetRepresentation);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum RotationAxes
+  {
+    AxisX = 0,
+    AxisY,
+    AxisZ,
+    ViewAxis
+  };
 
   enum InteractionStates
   {
@@ -91,17 +107,31 @@ public:
   ///@}
 
   /**
+   * The axis of the ring last picked (AxisX, AxisY, AxisZ in the handle's frame, or ViewAxis),
+   * about which Rotating turns the handle. The widget may set it.
+   */
+  vtkSetClampMacro(RotationAxis, int, AxisX, ViewAxis);
+  vtkGetMacro(RotationAxis, int);
+
+  /**
+   * The handle's frame: column `axis` of its rotation, in world coordinates.
+   */
+  void GetFrameAxis(int axis, double direction[3]);
+
+  /**
    * The interaction state may be set by the widget (for the resize states).
    */
   vtkSetClampMacro(InteractionState, int, Outside, ResizingHandle);
 
   ///@{
   /**
-   * Properties of the handle sphere and the ring, normal and while selected.
+   * Properties of the handle sphere, normal and while selected, and of the rings (`axis` one
+   * of RotationAxes; GetRingProperty() is the view ring's).
    */
   vtkGetObjectMacro(HandleProperty, vtkProperty);
   vtkGetObjectMacro(SelectedHandleProperty, vtkProperty);
-  vtkGetObjectMacro(RingProperty, vtkProperty);
+  vtkProperty* GetRingProperty() { return this->GetRingProperty(ViewAxis); }
+  vtkProperty* GetRingProperty(int axis);
   ///@}
 
   // vtkWidgetRepresentation API
@@ -114,7 +144,7 @@ public:
   void PlaceWidget(double bounds[6]) override;
 
   /**
-   * Registers the sphere and ring pickers with the interactor's picking manager;
+   * Registers the picker of the sphere and the rings with the interactor's picking manager;
    * ComputeInteractionState picks through it (GetAssemblyPath) where it is enabled.
    */
   void RegisterPickers() override;
@@ -137,7 +167,19 @@ protected:
   // The world point under display position (x, y) in the plane through the current centre
   // perpendicular to the view.
   void DisplayToViewPlane(double x, double y, double world[3]);
+  // The same in the plane through the current centre with the given normal; false where the
+  // plane is seen edge-on.
+  bool DisplayToPlane(double x, double y, const double normal[3], double world[3]);
+  // The direction of rotation axis `axis` (RotationAxes) now.
+  void GetRotationAxisDirection(int axis, double direction[3]);
   void Highlight(bool on);
+  // At the start of a turn: where a ring seen nearly edge-on is grabbed, the screen motion
+  // of a radian along it (TangentPerRadian); zero for a ring seen well.
+  void StartRingTangent();
+  // Draws the axis of a constrained translation through the handle.
+  void ShowAxis(const double direction[3]);
+  // Every actor, the rings first.
+  std::array<vtkActor*, 7> Actors();
   // Renders the visible actors with `render` (an opaque or translucent pass).
   int RenderActors(int (vtkProp::*render)(vtkViewport*), vtkViewport* viewport);
 
@@ -145,6 +187,7 @@ protected:
   double HandleRadius = 0.05;
   double ROIRadius = 0.5;
   vtkTypeBool ConstrainToAxis = 0;
+  int RotationAxis = ViewAxis;
 
   // The transform is rotation about the centre, then translation; both are kept to rebuild it.
   double Rotation[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
@@ -157,23 +200,29 @@ protected:
   double StartWorld[3] = { 0.0, 0.0, 0.0 };
   double StartTranslation[3] = { 0.0, 0.0, 0.0 };
   double StartRotation[3][3];
+  double StartAxis[3] = { 0.0, 0.0, 1.0 }; // of the rotation in progress
+  double TangentPerRadian[2] = { 0.0, 0.0 };
   double Bounds[6];
 
   vtkNew<vtkSphereSource> HandleSource;
   vtkNew<vtkPolyDataMapper> HandleMapper;
   vtkNew<vtkActor> HandleActor;
-  vtkNew<vtkRegularPolygonSource> RingSource;
-  vtkNew<vtkTubeFilter> RingTube;
-  vtkNew<vtkPolyDataMapper> RingMapper;
-  vtkNew<vtkActor> RingActor;
+  // The rings, indexed by RotationAxes.
+  vtkNew<vtkRegularPolygonSource> RingSources[4];
+  vtkNew<vtkTubeFilter> RingTubes[4];
+  vtkNew<vtkPolyDataMapper> RingMappers[4];
+  vtkNew<vtkActor> RingActors[4];
+  // The axis of a constrained translation.
+  vtkNew<vtkLineSource> AxisSource;
+  vtkNew<vtkPolyDataMapper> AxisMapper;
+  vtkNew<vtkActor> AxisActor;
   vtkNew<vtkSphereSource> ROISource;
   vtkNew<vtkPolyDataMapper> ROIMapper;
   vtkNew<vtkActor> ROIActor;
-  vtkNew<vtkCellPicker> HandlePicker;
-  vtkNew<vtkCellPicker> RingPicker;
+  vtkNew<vtkCellPicker> Picker; // the sphere and the rings
   vtkProperty* HandleProperty;
   vtkProperty* SelectedHandleProperty;
-  vtkProperty* RingProperty;
+  vtkNew<vtkProperty> RingProperties[4];
 
 private:
   vtkDeformationHandleRepresentation(const vtkDeformationHandleRepresentation&) = delete;

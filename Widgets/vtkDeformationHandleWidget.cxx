@@ -22,6 +22,7 @@
 #include "vtkWidgetCallbackMapper.h"
 #include "vtkWidgetEvent.h"
 
+#include <algorithm>
 #include <cstdlib>
 
 vtkStandardNewMacro(vtkDeformationHandleWidget);
@@ -95,6 +96,10 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
     vtkWidgetEvent::EndSelect, this, vtkDeformationHandleWidget::EndSelectAction);
   this->CallbackMapper->SetCallbackMethod(
     vtkCommand::MouseMoveEvent, vtkWidgetEvent::Move, this, vtkDeformationHandleWidget::MoveAction);
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::MouseWheelForwardEvent, vtkWidgetEvent::Up,
+    this, vtkDeformationHandleWidget::GrowAction);
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::MouseWheelBackwardEvent,
+    vtkWidgetEvent::Down, this, vtkDeformationHandleWidget::ShrinkAction);
 }
 
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
@@ -295,7 +300,7 @@ void vtkDeformationHandleWidget::BeginInteraction(bool resize, bool constrain)
   vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
   const int x = this->Interactor->GetEventPosition()[0];
   const int y = this->Interactor->GetEventPosition()[1];
-  this->CurrentRenderer = this->Interactor->FindPokedRenderer(x, y);
+  this->SetCurrentRenderer(this->Interactor->FindPokedRenderer(x, y));
   rep->SetRenderer(this->CurrentRenderer);
   const int state = rep->ComputeInteractionState(x, y);
   if (state == vtkDeformationHandleRepresentation::Outside)
@@ -383,6 +388,37 @@ void vtkDeformationHandleWidget::MoveAction(vtkAbstractWidget* widget)
   self->EventCallbackCommand->SetAbortFlag(1);
   self->InvokeEvent(vtkCommand::InteractionEvent, nullptr);
   self->Render(); // the filter re-solves for the new transform as the surface renders
+}
+
+void vtkDeformationHandleWidget::GrowAction(vtkAbstractWidget* widget)
+{
+  static_cast<vtkDeformationHandleWidget*>(widget)->ScaleRegion(1.1);
+}
+
+void vtkDeformationHandleWidget::ShrinkAction(vtkAbstractWidget* widget)
+{
+  static_cast<vtkDeformationHandleWidget*>(widget)->ScaleRegion(1.0 / 1.1);
+}
+
+void vtkDeformationHandleWidget::ScaleRegion(double factor)
+{
+  // Over the handle or a ring, the wheel resizes the ROI; elsewhere the camera zooms as usual.
+  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+  const int x = this->Interactor->GetEventPosition()[0];
+  const int y = this->Interactor->GetEventPosition()[1];
+  this->SetCurrentRenderer(this->Interactor->FindPokedRenderer(x, y));
+  rep->SetRenderer(this->CurrentRenderer);
+  if (this->Interacting || rep->ComputeInteractionState(x, y) == vtkDeformationHandleRepresentation::Outside)
+  {
+    return;
+  }
+  rep->SetROIRadius(std::max(factor * rep->GetROIRadius(), 1.5 * rep->GetHandleRadius()));
+  this->EventCallbackCommand->SetAbortFlag(1);
+  this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
+  this->PushToFilter(); // a new region: one refactorization per wheel step
+  this->InvokeEvent(vtkCommand::InteractionEvent, nullptr);
+  this->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
+  this->Render();
 }
 
 void vtkDeformationHandleWidget::EndSelectAction(vtkAbstractWidget* widget)

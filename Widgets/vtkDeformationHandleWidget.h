@@ -11,15 +11,19 @@
  * Default bindings (left button), set in the event translator so that applications can rebind
  * them (GetEventTranslator()->SetTranslation(...)):
  * - vtkWidgetEvent::Select (press, no modifier): on the sphere, translate in the view plane; on
- *   the ring, rotate about the view direction; anywhere else the event goes on to the
+ *   a ring, rotate about its axis (the view direction for the outer ring, the handle's own x,
+ *   y or z axis for the red, green and blue rings); anywhere else the event goes on to the
  *   interactor style, so a drag orbits the camera as in any VTK application, and a click (a
  *   release within 3 pixels of the press) on the surface (SetSurfaceProp) puts the handle on
  *   the picked vertex. An edit in progress is committed first (CommitEdit), never thrown away:
  *   the new handle starts from the edited shape;
- * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis;
+ * - vtkWidgetEvent::Translate (Control + press): the same, translating along one axis of the
+ *   handle's frame, the one the motion follows most, drawn through the handle during the drag;
  * - vtkWidgetEvent::Resize (Shift + press): on the sphere, resize the region of interest; on the
  *   ring, resize the handle; elsewhere as Select;
- * - vtkWidgetEvent::Move and EndSelect (mouse move, release, any modifier).
+ * - vtkWidgetEvent::Move and EndSelect (mouse move, release, any modifier);
+ * - vtkWidgetEvent::Up and Down (mouse wheel): over the handle or a ring, grow or shrink the
+ *   region of interest by 10% (the filter refactors once per step); elsewhere the camera zooms.
  * SetTranslation adds a binding and the first that matches wins, so remove one before binding
  * its event anew. For example, Control + drag resizes instead of translating along one axis after
  * @code
@@ -111,6 +115,10 @@ protected:
   void BeginInteraction(bool resize, bool constrain);
   static void MoveAction(vtkAbstractWidget* widget);
   static void EndSelectAction(vtkAbstractWidget* widget);
+  // vtkWidgetEvent::Up and Down (the mouse wheel): over the handle, grow or shrink the ROI.
+  static void GrowAction(vtkAbstractWidget* widget);
+  static void ShrinkAction(vtkAbstractWidget* widget);
+  void ScaleRegion(double factor);
 
   /**
    * Registers the surface picker with the picking manager (vtkInteractorObserver API).

@@ -4,7 +4,8 @@
 // frame against a baseline. A second case deletes the widget in the middle of a drag; a third
 // drags and places with VTK's picking manager on; a fourth places through PlaceWidget and drags
 // with a rebound modifier; a fifth orbits by dragging the surface and commits by clicking; a sixth
-// renders a translucent handle against a baseline.
+// renders a translucent handle against a baseline; a seventh turns the handle about each axis of
+// its frame; an eighth moves it along one axis and resizes the region with the wheel.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 
@@ -19,13 +20,17 @@
 #include "vtkMatrix4x4.h"
 #include "vtkPickingManager.h"
 #include "vtkPoints.h"
+#include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindowInteractor.h"
+#include "vtkTransform.h"
 #include "vtkWidgetEvent.h"
 #include "vtkWidgetEventTranslator.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -443,6 +448,206 @@ int PlaceWidgetAndBindings()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+
+// The largest entry of R - (rotation by `degrees` about unit `axis`).
+double RotationError(vtkMatrix4x4* m, const double axis[3], double degrees)
+{
+  vtkNew<vtkTransform> expected;
+  expected->RotateWXYZ(degrees, axis);
+  double worst = 0.0;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      worst = std::max(worst, std::abs(m->GetElement(r, c) - expected->GetMatrix()->GetElement(r, c)));
+    }
+  }
+  return worst;
+}
+
+int RotateAboutEachAxis()
+{
+  // In a view oblique to all three axes, drag each of the handle's x, y and z rings 60 degrees
+  // along itself: the handle turns 60 degrees about that axis (entries within sin 3 degrees),
+  // the filter's handle vertices follow, and nothing is refactored. Then, in the scene's own
+  // view, where the x ring is seen edge-on (a line), a drag along that line still turns the
+  // handle about x.
+  Scene scene;
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(1.3, -1.0, 1.3);
+  scene.Renderer->ResetCameraClippingRange();
+  auto widget = scene.MakeWidget();
+  vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
+  const int factorizations = scene.Filter->GetNumberOfFactorizations();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    widget->ResetHandle();
+    scene.Window->Render();
+    double center[3], e1[3] = { 0.0, 0.0, 0.0 }, e2[3] = { 0.0, 0.0, 0.0 }, direction[3] = { 0.0, 0.0, 0.0 };
+    rep->GetCurrentCenter(center);
+    e1[(axis + 1) % 3] = 1.0; // the ring's plane, with e1 x e2 the axis
+    e2[(axis + 2) % 3] = 1.0;
+    direction[axis] = 1.0;
+    const double r = 1.15 * rep->GetHandleRadius();
+    // Start half-way between the other two rings, and sweep 60 degrees along the ring.
+    auto ringPoint = [&](double degrees, double p[2]) {
+      const double a = vtkMath::RadiansFromDegrees(degrees);
+      double world[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        world[i] = center[i] + r * (std::cos(a) * e1[i] + std::sin(a) * e2[i]);
+      }
+      scene.Display(world, p);
+    };
+    // Grab the ring in front of the sphere, outside its disc on screen.
+    double centerDisplay[2], view[3], start = 0.0, best = -1.0;
+    scene.Display(center, centerDisplay);
+    camera->GetDirectionOfProjection(view);
+    for (double degrees = 0.0; degrees < 360.0; degrees += 5.0)
+    {
+      const double a = vtkMath::RadiansFromDegrees(degrees);
+      double p[2], offset[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        offset[i] = std::cos(a) * e1[i] + std::sin(a) * e2[i];
+      }
+      ringPoint(degrees, p);
+      const double score = std::hypot(p[0] - centerDisplay[0], p[1] - centerDisplay[1]);
+      const bool nearAnotherRing = std::abs(std::cos(a)) < 0.3 || std::abs(std::sin(a)) < 0.3;
+      if (!nearAnotherRing && vtkMath::Dot(offset, view) < -0.2 && score > best)
+      {
+        best = score;
+        start = degrees;
+      }
+    }
+    double from[2];
+    ringPoint(start, from);
+    scene.Play(Drag(from, [&](double t, double p[2]) { ringPoint(start + 60.0 * t, p); }));
+    Check(rep->GetRotationAxis() == axis, "the drag picked ring " + std::to_string(axis));
+    const double error = RotationError(rep->GetTransform()->GetMatrix(), direction, 60.0);
+    std::cout << "ring " << axis << ": rotation error " << error << "\n";
+    Check(error < std::sin(vtkMath::RadiansFromDegrees(3.0)),
+      "a 60-degree sweep on ring " + std::to_string(axis) + " turns the handle 60 degrees about it");
+  }
+  // The filter follows the last turn.
+  vtkPolyData* output = scene.Filter->GetOutput();
+  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+    {
+      double expected[3];
+      rep->GetTransform()->TransformPoint(scene.Rest->GetPoint(i), expected);
+      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
+    }
+  }
+  Check(worst < 2e-3, "the filter's handle vertices follow the turn");
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations, "turning does not refactor");
+
+  // Edge-on: from the front (-y), slightly above, the x ring is a vertical line on screen.
+  widget->ResetHandle();
+  camera->SetPosition(0.5, -1.2, 1.4);
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Window->Render();
+  double center[3], front[3], at[2];
+  rep->GetCurrentCenter(center);
+  const double r = 1.15 * rep->GetHandleRadius();
+  // The x ring's point half-way between its nearest to the camera and its top on screen.
+  double view[3], top[3], half[3];
+  camera->GetDirectionOfProjection(view);
+  const double x[3] = { 1.0, 0.0, 0.0 };
+  vtkMath::Cross(x, view, top);
+  vtkMath::Normalize(top);
+  for (int i = 0; i < 3; ++i)
+  {
+    half[i] = top[i] - view[i];
+  }
+  half[0] = 0.0;
+  vtkMath::Normalize(half);
+  for (int i = 0; i < 3; ++i)
+  {
+    front[i] = center[i] + r * half[i];
+  }
+  scene.Display(front, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 15.0 * t; }));
+  Check(rep->GetRotationAxis() == vtkDeformationHandleRepresentation::AxisX, "the edge-on x ring is picked");
+  vtkMatrix4x4* m = rep->GetTransform()->GetMatrix();
+  const double trace = m->GetElement(0, 0) + m->GetElement(1, 1) + m->GetElement(2, 2);
+  const double angle = std::acos(std::min(1.0, (trace - 1.0) / 2.0));
+  // The rotation axis, from the antisymmetric part; x turns the top of the ring toward -y.
+  const double axisX = m->GetElement(2, 1) - m->GetElement(1, 2);
+  const double axisNorm = std::hypot(axisX,
+    std::hypot(m->GetElement(0, 2) - m->GetElement(2, 0), m->GetElement(1, 0) - m->GetElement(0, 1)));
+  std::cout << "edge-on x ring: " << vtkMath::DegreesFromRadians(angle) << " degrees, axis x component "
+            << (axisNorm > 0.0 ? axisX / axisNorm : 0.0) << "\n";
+  Check(angle > vtkMath::RadiansFromDegrees(5.0) && axisNorm > 0.0 && std::abs(axisX) / axisNorm > 0.999,
+    "a drag along the edge-on x ring turns the handle about x");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+int ConstrainedMoveAndWheel()
+{
+  // Control + drag moves along one frame axis, drawn during the drag; the wheel over the handle
+  // grows and shrinks the ROI (one refactorization a step), and away from it zooms the camera.
+  Scene scene;
+  auto widget = scene.MakeWidget();
+  vtkDeformationHandleRepresentation* rep = widget->GetDeformationHandleRepresentation();
+  vtkNew<vtkPropCollection> actors;
+  rep->GetActors(actors);
+  int mostVisible = 0;
+  auto visible = [&]() {
+    int count = 0;
+    for (int i = 0; i < actors->GetNumberOfItems(); ++i)
+    {
+      count += vtkProp::SafeDownCast(actors->GetItemAsObject(i))->GetVisibility() ? 1 : 0;
+    }
+    return count;
+  };
+  const int atRest = visible();
+  vtkNew<vtkCallbackCommand> watch;
+  watch->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    (*static_cast<std::function<void()>*>(data))();
+  });
+  std::function<void()> record = [&]() { mostVisible = std::max(mostVisible, visible()); };
+  watch->SetClientData(&record);
+  widget->AddObserver(vtkCommand::InteractionEvent, watch);
+
+  double start[3], at[2];
+  rep->GetCurrentCenter(start);
+  scene.Display(start, at);
+  // Mostly right on screen (world x), a little up: only x moves.
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0] + 70.0 * t; p[1] = at[1] + 15.0 * t; },
+    ControlModifier));
+  double moved[3];
+  rep->GetCurrentCenter(moved);
+  std::cout << "constrained move: (" << moved[0] - start[0] << ", " << moved[1] - start[1] << ", "
+            << moved[2] - start[2] << ")\n";
+  Check(moved[0] - start[0] > 0.05, "the constrained drag moves along x");
+  Check(moved[1] == start[1] && moved[2] == start[2], "and along x only");
+  Check(mostVisible == atRest + 1, "the axis is drawn during the constrained drag");
+  Check(visible() == atRest, "and hidden after it");
+
+  const int factorizations = scene.Filter->GetNumberOfFactorizations();
+  const double roi = rep->GetROIRadius();
+  rep->GetCurrentCenter(moved);
+  scene.Display(moved, at);
+  scene.Play(Event("MouseMoveEvent", at[0], at[1]) + Event("MouseWheelForwardEvent", at[0], at[1]));
+  scene.Window->Render();
+  Check(std::abs(rep->GetROIRadius() - 1.1 * roi) < 1e-12, "the wheel over the handle grows the ROI");
+  Check(std::abs(scene.Filter->GetROIRadius() - rep->GetROIRadius()) < 1e-12, "the filter follows");
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations + 1, "one refactorization");
+  scene.Play(Event("MouseWheelBackwardEvent", at[0], at[1]));
+  scene.Window->Render();
+  Check(std::abs(rep->GetROIRadius() - roi) < 1e-12, "and shrinks it back");
+
+  const double distance = scene.Renderer->GetActiveCamera()->GetDistance();
+  scene.Play(Event("MouseMoveEvent", 10.0, 10.0) + Event("MouseWheelForwardEvent", 10.0, 10.0));
+  Check(std::abs(rep->GetROIRadius() - roi) < 1e-12, "the wheel elsewhere leaves the ROI");
+  Check(scene.Renderer->GetActiveCamera()->GetDistance() < distance, "and zooms the camera");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -490,9 +695,17 @@ int main(int argc, char* argv[])
   {
     return TranslucentHandle(argc, argv);
   }
+  if (name == "RotateAboutEachAxis")
+  {
+    return RotateAboutEachAxis();
+  }
+  if (name == "ConstrainedMoveAndWheel")
+  {
+    return ConstrainedMoveAndWheel();
+  }
   std::cerr << "usage: " << argv[0]
             << " PlaceDragRotateResize|DeleteMidInteraction|PickingManager|PlaceWidgetAndBindings|"
-               "OrbitClickAndCommit|TranslucentHandle"
+               "OrbitClickAndCommit|TranslucentHandle|RotateAboutEachAxis|ConstrainedMoveAndWheel"
                " [-V baseline -T temp]\n";
   return EXIT_FAILURE;
 }
