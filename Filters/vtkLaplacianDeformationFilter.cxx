@@ -21,6 +21,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
+#include "vtkVariant.h"
 #include "vtkSignedCharArray.h"
 #include <vtksys/SystemInformation.hxx>
 
@@ -389,12 +390,13 @@ vtkPolyData* vtkLaplacianDeformationFilter::RestSurface(vtkPolyData* input)
 {
   // The input, or after CommitEdit the input with the committed points.
   vtkInternals& internals = *this->Internals;
-  if (input != internals.LastInput || input->GetMTime() != internals.CommittedInput)
+  const vtkMTimeType inputTime = vtkLaplacianSurfaceAdapter::GetContentTime(input);
+  if (input != internals.LastInput || inputTime != internals.CommittedInput)
   {
     internals.Commits.clear();
   }
   internals.LastInput = input;
-  internals.CommittedInput = input->GetMTime();
+  internals.CommittedInput = inputTime;
   if (internals.Commits.empty())
   {
     return input;
@@ -418,7 +420,7 @@ void vtkLaplacianDeformationFilter::ComputeReach(vtkPolyData* rest)
   // only when what it reads changes.
   vtkInternals& internals = *this->Internals;
   vtkDataArray* selection = internals.Selection;
-  const double key[5] = { static_cast<double>(std::max(rest->GetMTime(), rest->GetPoints()->GetMTime())),
+  const double key[5] = { static_cast<double>(vtkLaplacianSurfaceAdapter::GetContentTime(rest)),
     selection ? static_cast<double>(selection->GetMTime()) : -1.0,
     selection ? 0.0 : this->HandleCenter[0], selection ? 0.0 : this->HandleCenter[1],
     selection ? 0.0 : this->HandleCenter[2] };
@@ -470,7 +472,7 @@ bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
 {
   // The surface graph depends on the rest surface and on the part of it the edit can reach.
   vtkInternals& internals = *this->Internals;
-  const vtkMTimeType time = std::max(rest->GetMTime(), rest->GetPoints()->GetMTime());
+  const vtkMTimeType time = vtkLaplacianSurfaceAdapter::GetContentTime(rest);
   internals.Diagonal = rest->GetLength();
   this->ComputeReach(rest);
   const vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
@@ -510,7 +512,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   if (selection)
   {
     region.Selection = le::RegionRequest::Kind::Labeled;
-    region.LabelsVersion = std::max(selection->GetMTime(), rest->GetMTime());
+    region.LabelsVersion = vtkLaplacianSurfaceAdapter::GetContentTime(rest);
   }
   else
   {

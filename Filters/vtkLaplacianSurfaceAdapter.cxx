@@ -4,15 +4,16 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkLinearTransform.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSignedCharArray.h"
-#include "vtkVariant.h"
 
 #include <algorithm>
 #include <array>
@@ -22,6 +23,26 @@
 #include <unordered_map>
 
 namespace le = LaplacianEditing;
+
+vtkMTimeType vtkLaplacianSurfaceAdapter::GetContentTime(vtkPolyData* surface)
+{
+  vtkMTimeType time = surface->GetPoints() ? surface->GetPoints()->GetMTime() : 0;
+  for (vtkCellArray* cells :
+    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+  {
+    time = std::max(time, cells ? cells->GetMTime() : 0);
+  }
+  for (vtkFieldData* attributes : { static_cast<vtkFieldData*>(surface->GetPointData()),
+         static_cast<vtkFieldData*>(surface->GetCellData()) })
+  {
+    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+    {
+      vtkAbstractArray* array = attributes->GetAbstractArray(i);
+      time = std::max(time, array ? array->GetMTime() : 0);
+    }
+  }
+  return time;
+}
 
 vtkIdType vtkLaplacianSurfaceAdapter::FindNearestCorner(vtkPolyData* input, const double point[3])
 {

@@ -55,7 +55,7 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input)
   vtkMultiProcessController* controller = this->Controller;
   const int ranks = controller->GetNumberOfProcesses();
   const bool first = controller->GetLocalProcessId() == 0;
-  const double localTime = static_cast<double>(input->GetMTime());
+  const double localTime = static_cast<double>(vtkLaplacianSurfaceAdapter::GetContentTime(input));
   std::vector<double> times(ranks, 0.0);
   controller->Gather(&localTime, times.data(), 1, 0);
   double changed = first && (times != this->PieceTimes || !this->Gathered) ? 1.0 : 0.0;

@@ -119,6 +119,34 @@ TEST(Feedback, RolesAreTheActiveScalarsWithTheirOwnColoursUnlessTurnedOff)
   EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray("EditRole")->GetLookupTable(), nullptr);
 }
 
+TEST(Feedback, TheSameDataCopiedAnewNeitherRefactorsNorDropsCommits)
+{
+  // ParaView's pipeline copies the same arrays into the filter's input on every update, which
+  // changes the input's MTime but not its content: moves must not refactor, commits must stay.
+  auto bunny = Bunny();
+  vtkNew<vtkPolyData> input;
+  input->ShallowCopy(bunny);
+  auto filter = QuickStart(input);
+  filter->Update();
+  filter->CommitEdit();
+  filter->SetHandleTranslation(0.0, 0.02 * bunny->GetLength(), 0.0);
+  filter->Update();
+  const int factorizations = filter->GetNumberOfFactorizations();
+  input->ShallowCopy(bunny);
+  filter->SetHandleTranslation(0.0, 0.03 * bunny->GetLength(), 0.0);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfFactorizations(), factorizations);
+  EXPECT_EQ(filter->GetNumberOfCommits(), 1);
+
+  // New points are a new input: the commits go, the system is factored anew.
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(bunny->GetPoints());
+  input->SetPoints(points);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfCommits(), 0);
+  EXPECT_EQ(filter->GetNumberOfFactorizations(), factorizations + 1);
+}
+
 namespace
 {
 struct UnlikelyRegion
