@@ -127,6 +127,39 @@ void vtkDeformationHandleRepresentation::SetCenter(double x, double y, double z)
   this->ResetTransform();
 }
 
+void vtkDeformationHandleRepresentation::SetRestCenter(double x, double y, double z)
+{
+  this->Center[0] = x;
+  this->Center[1] = y;
+  this->Center[2] = z;
+  this->UpdateTransform();
+}
+
+void vtkDeformationHandleRepresentation::SetTranslation(double x, double y, double z)
+{
+  this->Translation[0] = x;
+  this->Translation[1] = y;
+  this->Translation[2] = z;
+  this->UpdateTransform();
+}
+
+void vtkDeformationHandleRepresentation::SetRotationAngles(double x, double y, double z)
+{
+  vtkNew<vtkTransform> rotation;
+  rotation->PostMultiply(); // as the filter's HandleRotation: about x, then y, then z
+  rotation->RotateX(x);
+  rotation->RotateY(y);
+  rotation->RotateZ(z);
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Rotation[r][c] = rotation->GetMatrix()->GetElement(r, c);
+    }
+  }
+  this->UpdateTransform();
+}
+
 void vtkDeformationHandleRepresentation::ResetTransform()
 {
   vtkMath::Identity3x3(this->Rotation);
@@ -136,6 +169,24 @@ void vtkDeformationHandleRepresentation::ResetTransform()
 
 void vtkDeformationHandleRepresentation::UpdateTransform()
 {
+  // The angles of R = Rz(c) Ry(b) Rx(a); at b = +-90 degrees only a - c or a + c is defined,
+  // and a = 0 is chosen.
+  const double(&m)[3][3] = this->Rotation;
+  const double b = std::asin(std::max(-1.0, std::min(1.0, -m[2][0])));
+  double a = 0.0, c = 0.0;
+  if (std::abs(m[2][0]) < 1.0 - 1e-12)
+  {
+    a = std::atan2(m[2][1], m[2][2]);
+    c = std::atan2(m[1][0], m[0][0]);
+  }
+  else
+  {
+    c = std::atan2(-m[0][1], m[1][1]);
+  }
+  this->RotationAngles[0] = vtkMath::DegreesFromRadians(a);
+  this->RotationAngles[1] = vtkMath::DegreesFromRadians(b);
+  this->RotationAngles[2] = vtkMath::DegreesFromRadians(c);
+
   // x' = R (x - c) + c + t
   vtkNew<vtkMatrix4x4> matrix;
   double rotatedCenter[3];

@@ -87,6 +87,23 @@ public:
   vtkTransform* GetTransform();
 
   /**
+   * Move the rest centre and keep the transform (ParaView sets the centre, the translation and
+   * the rotation as separate properties, in any order).
+   */
+  void SetRestCenter(double x, double y, double z);
+
+  ///@{
+  /**
+   * The transform as the filter's HandleTranslation and HandleRotation properties give it: a
+   * translation, and angles in degrees about x, then y, then z (R = Rz Ry Rx), about the centre.
+   */
+  void SetTranslation(double x, double y, double z);
+  vtkGetVector3Macro(Translation, double);
+  void SetRotationAngles(double x, double y, double z);
+  vtkGetVector3Macro(RotationAngles, double);
+  ///@}
+
+  /**
    * Where the transform puts the centre.
    */
   void GetCurrentCenter(double center[3]);
@@ -192,6 +209,7 @@ protected:
   // The transform is rotation about the centre, then translation; both are kept to rebuild it.
   double Rotation[3][3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
   double Translation[3] = { 0.0, 0.0, 0.0 };
+  double RotationAngles[3] = { 0.0, 0.0, 0.0 }; // of Rotation, kept by UpdateTransform
   vtkNew<vtkTransform> Transform;
   void UpdateTransform();
 

@@ -10,10 +10,12 @@
 #include "vtkDataSet.h"
 #include "vtkEvent.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPickingManager.h"
 #include "vtkPolyData.h"
 #include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -82,7 +84,6 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
   this->Internals->ClickObserver->SetCallback(vtkDeformationHandleWidget::WatchClick);
   this->Internals->ClickObserver->PassiveObserverOn();
   this->Internals->SurfacePicker->SetTolerance(0.002);
-  this->Internals->SurfacePicker->PickFromListOn();
   // Modifiers are bound here, in the event translator, so that applications can rebind them.
   this->CallbackMapper->SetCallbackMethod(vtkCommand::LeftButtonPressEvent, vtkEvent::NoModifier,
     0, 0, nullptr, vtkWidgetEvent::Select, this, vtkDeformationHandleWidget::SelectAction);
@@ -171,6 +172,7 @@ void vtkDeformationHandleWidget::SetSurfaceProp(vtkProp* prop)
   // The pick list is set here, not at the pick: the picking manager may run the picker itself.
   vtkCellPicker* picker = this->Internals->SurfacePicker;
   picker->InitializePickList();
+  picker->SetPickFromList(prop != nullptr);
   if (prop)
   {
     picker->AddPickList(prop);
@@ -220,7 +222,7 @@ void vtkDeformationHandleWidget::PushToFilter()
 
 bool vtkDeformationHandleWidget::PickSurface(int x, int y, vtkIdType& pointId)
 {
-  if (!this->SurfaceProp || !this->CurrentRenderer)
+  if (!this->CurrentRenderer)
   {
     return false;
   }
@@ -236,6 +238,13 @@ bool vtkDeformationHandleWidget::PickSurface(int x, int y, vtkIdType& pointId)
   {
     picker->Pick(x, y, 0.0, this->CurrentRenderer);
     path = picker->GetPath();
+  }
+  // Without a surface prop, any prop but the handle's own.
+  vtkNew<vtkPropCollection> handleActors;
+  this->GetDeformationHandleRepresentation()->GetActors(handleActors);
+  if (path && !this->SurfaceProp && handleActors->IsItemPresent(picker->GetViewProp()))
+  {
+    path = nullptr;
   }
   // The output keeps the input's point ids.
   pointId = path ? picker->GetPointId() : -1;

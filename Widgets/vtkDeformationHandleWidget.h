@@ -80,7 +80,8 @@ public:
   vtkGetObjectMacro(DeformationFilter, vtkLaplacianDeformationFilter);
 
   /**
-   * The prop showing the surface; a click on it places the handle.
+   * The prop showing the surface; a click on it places the handle. Without one (the default,
+   * and in ParaView), a click on any prop but the handle places it.
    */
   void SetSurfaceProp(vtkProp* prop);
   vtkGetObjectMacro(SurfaceProp, vtkProp);

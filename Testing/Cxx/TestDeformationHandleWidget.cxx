@@ -5,7 +5,8 @@
 // drags and places with VTK's picking manager on; a fourth places through PlaceWidget and drags
 // with a rebound modifier; a fifth orbits by dragging the surface and commits by clicking; a sixth
 // renders a translucent handle against a baseline; a seventh turns the handle about each axis of
-// its frame; an eighth moves it along one axis and resizes the region with the wheel.
+// its frame; an eighth moves it along one axis and resizes the region with the wheel; a ninth
+// checks the accessors ParaView drives against the filter's handle properties.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 
@@ -648,6 +649,56 @@ int ConstrainedMoveAndWheel()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int PropertyAccessors()
+{
+  // ParaView drives the representation through SetRestCenter, SetTranslation and
+  // SetRotationAngles, and reads GetRotationAngles back: they follow the filter's
+  // HandleCenter, HandleTranslation and HandleRotation, in any order.
+  Scene scene;
+  vtkNew<vtkDeformationHandleRepresentation> rep;
+  rep->SetRotationAngles(10.0, -35.0, 70.0);
+  rep->SetTranslation(0.05, -0.02, 0.1);
+  rep->SetRestCenter(0.5, 0.5, 0.0);
+  const double* angles = rep->GetRotationAngles();
+  Check(std::abs(angles[0] - 10.0) < 1e-9 && std::abs(angles[1] + 35.0) < 1e-9 &&
+      std::abs(angles[2] - 70.0) < 1e-9,
+    "the rotation angles read back as set");
+  scene.Filter->SetHandleCenter(0.5, 0.5, 0.0);
+  scene.Filter->SetHandleTranslation(0.05, -0.02, 0.1);
+  scene.Filter->SetHandleRotation(10.0, -35.0, 70.0);
+  scene.Filter->Update();
+  vtkPolyData* output = scene.Filter->GetOutput();
+  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+    {
+      double expected[3];
+      rep->GetTransform()->TransformPoint(scene.Rest->GetPoint(i), expected);
+      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
+    }
+  }
+  std::cout << "handle points from the properties vs the representation's transform: " << worst << "\n";
+  Check(worst < 2e-3, "the representation's transform is the filter's property transform");
+  // Near gimbal lock (y = 90 degrees) the angles still give the same rotation.
+  rep->SetRotationAngles(30.0, 90.0, 0.0);
+  vtkNew<vtkMatrix4x4> before;
+  before->DeepCopy(rep->GetTransform()->GetMatrix());
+  angles = rep->GetRotationAngles();
+  rep->SetRotationAngles(angles[0], angles[1], angles[2]);
+  double drift = 0.0;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      drift = std::max(drift, std::abs(before->GetElement(r, c) - rep->GetTransform()->GetMatrix()->GetElement(r, c)));
+    }
+  }
+  Check(drift < 1e-9, "angles read at gimbal lock give the same rotation back");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -703,9 +754,14 @@ int main(int argc, char* argv[])
   {
     return ConstrainedMoveAndWheel();
   }
+  if (name == "PropertyAccessors")
+  {
+    return PropertyAccessors();
+  }
   std::cerr << "usage: " << argv[0]
             << " PlaceDragRotateResize|DeleteMidInteraction|PickingManager|PlaceWidgetAndBindings|"
-               "OrbitClickAndCommit|TranslucentHandle|RotateAboutEachAxis|ConstrainedMoveAndWheel"
+               "OrbitClickAndCommit|TranslucentHandle|RotateAboutEachAxis|ConstrainedMoveAndWheel|"
+               "PropertyAccessors"
                " [-V baseline -T temp]\n";
   return EXIT_FAILURE;
 }
