@@ -1,16 +1,37 @@
-"""ParaView GUI smoke test, run as `paraview --plugins=LaplacianEditing --script=TestGUI.py`
-with LAPLACIAN_GUI_OUTPUT, LAPLACIAN_GUI_BASELINE and LAPLACIAN_TESTING_DIR (this folder: the
-GUI's script has no __file__) set: in the GUI's own Python, apply
-Laplacian Deformation to a sphere, move the handle through its properties, save a screenshot of
-the GUI's render view, compare it with the baseline, and quit with the result."""
+"""ParaView GUI test, run as `paraview --plugins=LaplacianEditing --script=TestGUI.py` with
+LAPLACIAN_GUI_OUTPUT, LAPLACIAN_GUI_BASELINE and LAPLACIAN_TESTING_DIR (this folder: the GUI's
+script has no __file__) set. In the GUI's own Python: apply Laplacian Deformation to a sphere and
+move the handle through its properties; compare the render view, with the project's handle
+widget in it, with the baseline; then drive that widget with mouse events sent to the view's
+interactor, as Qt would:
+  - a drag of the sphere moves the handle with the cursor, and, once applied, the output's
+    handle points, with no refactorization;
+  - a sweep along the handle's z ring (not the view axis) turns it by the angle swept;
+  - a click on the surface puts the handle centre on the clicked point and commits the edit.
+Quits with the result (and writes it to LAPLACIAN_GUI_OUTPUT.result)."""
+import math
 import os
 import sys
 import traceback
 
 output, baseline = os.environ["LAPLACIAN_GUI_OUTPUT"], os.environ["LAPLACIAN_GUI_BASELINE"]
+failures = []
+log = open(output + ".log", "w")  # the GUI's own output does not reach the console
+
+
+def say(text):
+    print(text, file=log, flush=True)
+
+
+def check(condition, what):
+    say(("ok: " if condition else "FAILED: ") + what)
+    if not condition:
+        failures.append(what)
+
+
 try:
     sys.path.insert(0, os.environ["LAPLACIAN_TESTING_DIR"])
-    from paraview.simple import GetActiveViewOrCreate, Render, SaveScreenshot
+    from paraview.simple import GetActiveViewOrCreate, Render, ResetCamera, SaveScreenshot
     import LaplacianDeformationScene as scene
 
     deform = scene.edit()
@@ -20,9 +41,123 @@ try:
         Render(view)
     SaveScreenshot(output, view, ImageResolution=[600, 500])
     # A GUI rendering may differ a little from pvpython's: a looser threshold than VTK's 0.05.
-    failures = scene.compare_with_baseline(output, baseline, 1.0)
+    failures += scene.compare_with_baseline(output, baseline, 1.0)
+
+    def info(name):
+        deform.UpdatePropertyInformation()
+        return deform.GetProperty(name).SMProperty.GetElement(0)
+
+    renderer, interactor = view.GetRenderer(), view.GetInteractor()
+
+    def display(point):
+        renderer.SetWorldPoint(point[0], point[1], point[2], 1.0)
+        renderer.WorldToDisplay()
+        return renderer.GetDisplayPoint()[:2]
+
+    def send(name, at, control=0):
+        interactor.SetEventInformation(int(round(at[0])), int(round(at[1])), control, 0)
+        interactor.InvokeEvent(name)
+
+    def drag(path, steps=12):
+        send("MouseMoveEvent", path(0.0))
+        send("LeftButtonPressEvent", path(0.0))
+        for k in range(1, steps + 1):
+            send("MouseMoveEvent", path(k / steps))
+        send("LeftButtonReleaseEvent", path(1.0))
+
+    def unchecked(name):
+        prop = deform.GetProperty(name).SMProperty
+        return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfElements())]
+
+    def apply():
+        for name in ("HandleCenter", "HandleTranslation", "HandleRotation"):
+            deform.SetPropertyWithName(name, unchecked(name))
+        Render(view)
+
+    def handle_points_center():
+        edited = deform.GetClientSideObject().GetOutput()
+        roles = edited.GetPointData().GetArray("EditRole")
+        points = [edited.GetPoint(i) for i in range(edited.GetNumberOfPoints()) if roles.GetValue(i) == 3]
+        return [sum(p[i] for p in points) / len(points) for i in range(3)]
+
+    # Closer, looking at the handle, for the drags.
+    camera = view.GetActiveCamera()
+    camera.SetFocalPoint(*[c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)])
+    camera.Dolly(2.5)
+    renderer.ResetCameraClippingRange()
+    Render(view)
+
+    # 1. Drag the sphere 40 pixels up.
+    factorizations = info("NumberOfFactorizations")
+    say(f"before the drag: {factorizations} factorizations, centre {unchecked('HandleCenter')}, "
+        f"radii {unchecked('HandleRadius')} {unchecked('ROIRadius')}")
+    center = [c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)]
+    before = handle_points_center()
+    at = display(center)
+    drag(lambda t: (at[0], at[1] + 40.0 * t))
+    translation = unchecked("HandleTranslation")
+    moved = [c + t for c, t in zip(unchecked("HandleCenter"), translation)]
+    landed = display(moved)
+    say(f"drag: handle centre now at {landed}, cursor at {(at[0], at[1] + 40.0)}")
+    check(abs(landed[0] - at[0]) < 2.0 and abs(landed[1] - at[1] - 40.0) < 2.0,
+          "a drag of the sphere moves the handle with the cursor (2 pixels)")
+    say(f"after the drag: centre {unchecked('HandleCenter')}, radii {unchecked('HandleRadius')} "
+        f"{unchecked('ROIRadius')}, translation {translation}")
+    apply()
+    after = handle_points_center()
+    shift = [a - b for a, b in zip(after, before)]
+    expected = [m - c for m, c in zip(moved, center)]
+    check(max(abs(s - e) for s, e in zip(shift, expected)) < 2e-3,
+          f"the output's handle points follow the drag once applied ({shift} for {expected})")
+    check(info("NumberOfFactorizations") == factorizations, "the drag does not refactor")
+
+    # 2. Turn about the handle's x axis, 40 degrees from the view direction: sweep 40 degrees
+    #    along the x ring, from its point in front of the sphere and outside its disc.
+    deform.HandleRotation = [0.0, 0.0, 0.0]
+    Render(view)
+    center = [c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)]
+    ring = 1.15 * deform.HandleRadius
+    direction = [f - p for f, p in zip(camera.GetFocalPoint(), camera.GetPosition())]
+
+    def ring_point(degrees):  # in the y-z plane, from y toward z
+        a = math.radians(degrees)
+        return [center[0], center[1] + ring * math.cos(a), center[2] + ring * math.sin(a)]
+
+    def score(degrees):
+        a = math.radians(degrees)
+        front = math.cos(a) * direction[1] + math.sin(a) * direction[2] < 0.0
+        near_other_ring = min(abs(math.cos(a)), abs(math.sin(a))) < 0.6
+        p, c = display(ring_point(degrees)), display(center)
+        return math.dist(p, c) if front and not near_other_ring else -1.0
+
+    start = max(range(0, 360, 5), key=score)
+    say(f"turn from {start} degrees, centre {center}, display {display(center)}, start {display(ring_point(start))}")
+    drag(lambda t: display(ring_point(start + 40.0 * t)), steps=20)
+    rotation = unchecked("HandleRotation")
+    say(f"turn: HandleRotation {rotation}")
+    check(abs(rotation[0] - 40.0) < 3.0 and abs(rotation[1]) < 3.0 and abs(rotation[2]) < 3.0,
+          "a 40-degree sweep along the x ring turns the handle 40 degrees about x (3 degrees)")
+    apply()
+    check(info("NumberOfFactorizations") == factorizations, "the turn does not refactor")
+
+    # 3. Click the surface low on the sphere, outside the region: the handle goes there, and the
+    #    edit in progress is committed first.
+    ResetCamera(view)
+    Render(view)
+    target = [0.357, -0.288, -0.198]
+    at = display(target)
+    send("MouseMoveEvent", at)
+    send("LeftButtonPressEvent", at)
+    send("LeftButtonReleaseEvent", at)
+    placed = unchecked("HandleCenter")
+    say(f"click: HandleCenter {placed}")
+    check(math.dist(placed, target) < 0.05, "a click on the surface puts the handle centre there")
+    check(unchecked("HandleTranslation") == [0.0, 0.0, 0.0] and unchecked("HandleRotation") == [0.0, 0.0, 0.0],
+          "the new handle starts at rest")
+    check(info("NumberOfCommits") == 1, "the edit in progress was committed")
 except Exception:  # any error must end the run, not open a modal dialog that never closes
-    failures = [traceback.format_exc()]
+    failures.append(traceback.format_exc())
+    say(failures[-1])
 with open(output + ".result", "w") as result:
     result.write("\n".join(failures) if failures else "passed")
 os._exit(1 if failures else 0)
