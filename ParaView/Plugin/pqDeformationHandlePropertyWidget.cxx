@@ -3,9 +3,11 @@
 #include "pqDoubleLineEdit.h"
 #include "pqPointPickingHelper.h"
 #include "pqView.h"
+#include "vtkPVGeneralSettings.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
 #include "vtkSMPropertyGroup.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMViewProxy.h"
 #include "vtkSMProxy.h"
 
 #include <QCheckBox>
@@ -90,6 +92,41 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
     &pqDeformationHandlePropertyWidget::rememberEdit);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
     &pqDeformationHandlePropertyWidget::commitBeforePlacing);
+  QObject::connect(this, &pqInteractivePropertyWidgetAbstract::startInteraction, this,
+    &pqDeformationHandlePropertyWidget::leaveRendersToAutoApply);
+  QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
+    &pqDeformationHandlePropertyWidget::restoreInteractionRenders);
+}
+
+void pqDeformationHandlePropertyWidget::leaveRendersToAutoApply()
+{
+  // With Auto Apply, every move is applied and the view rendered with the new surface and
+  // handle: the render the widget asks for first would show the old surface, and costs as much
+  // (half the frame rate of a drag in the GUI). The view renders only for Auto Apply meanwhile.
+  pqView* view = this->view();
+  vtkSMProperty* property =
+    view ? view->getViewProxy()->GetProperty("EnableRenderOnInteraction") : nullptr;
+  if (!property || !vtkPVGeneralSettings::GetInstance()->GetAutoApply())
+  {
+    return;
+  }
+  this->SavedRenderOnInteraction = vtkSMPropertyHelper(property).GetAsInt();
+  vtkSMPropertyHelper(property).Set(0);
+  view->getViewProxy()->UpdateVTKObjects();
+}
+
+void pqDeformationHandlePropertyWidget::restoreInteractionRenders()
+{
+  pqView* view = this->view();
+  if (this->SavedRenderOnInteraction < 0 || !view)
+  {
+    return;
+  }
+  vtkSMPropertyHelper(view->getViewProxy(), "EnableRenderOnInteraction")
+    .Set(this->SavedRenderOnInteraction);
+  view->getViewProxy()->UpdateVTKObjects();
+  this->SavedRenderOnInteraction = -1;
+  this->render();
 }
 
 void pqDeformationHandlePropertyWidget::rememberEdit()

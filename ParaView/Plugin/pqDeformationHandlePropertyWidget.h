@@ -35,6 +35,8 @@ protected Q_SLOTS:
   void commitEdit();
   void rememberEdit();
   void commitBeforePlacing();
+  void leaveRendersToAutoApply();
+  void restoreInteractionRenders();
 
 private:
   // Sets widget properties, then tells the panel (and Auto Apply) that they changed.
@@ -44,6 +46,8 @@ private:
   // At the start of an interaction: the rest centre, and whether the handle had moved.
   double StartCenter[3] = { 0.0, 0.0, 0.0 };
   bool StartMoved = false;
+  // The view's EnableRenderOnInteraction before a drag that Auto Apply renders (-1: untouched).
+  int SavedRenderOnInteraction = -1;
 };
 
 #endif

@@ -31,7 +31,8 @@ def check(condition, what):
 
 try:
     sys.path.insert(0, os.environ["LAPLACIAN_TESTING_DIR"])
-    from paraview.simple import GetActiveViewOrCreate, Render, ResetCamera, SaveScreenshot
+    from paraview.simple import (GetActiveViewOrCreate, GetSettingsProxy, Render, ResetCamera,
+                                 SaveScreenshot)
     import LaplacianDeformationScene as scene
 
     deform = scene.edit()
@@ -58,12 +59,19 @@ try:
         interactor.SetEventInformation(int(round(at[0])), int(round(at[1])), control, 0)
         interactor.InvokeEvent(name)
 
+    renders = [0]
+    view.GetRenderWindow().AddObserver("EndEvent", lambda *_: renders.__setitem__(0, renders[0] + 1))
+
     def drag(path, steps=12):
+        """Returns the number of renders during the moves."""
         send("MouseMoveEvent", path(0.0))
         send("LeftButtonPressEvent", path(0.0))
+        renders[0] = 0
         for k in range(1, steps + 1):
             send("MouseMoveEvent", path(k / steps))
+        during = renders[0]
         send("LeftButtonReleaseEvent", path(1.0))
+        return during
 
     def unchecked(name):
         prop = deform.GetProperty(name).SMProperty
@@ -94,7 +102,13 @@ try:
     center = [c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)]
     before = handle_points_center()
     at = display(center)
-    drag(lambda t: (at[0], at[1] + 40.0 * t))
+    # With Auto Apply, which renders each applied move, the widget does not render the view too.
+    settings = GetSettingsProxy("GeneralSettings")
+    settings.AutoApply = 1
+    during = drag(lambda t: (at[0], at[1] + 40.0 * t))
+    settings.AutoApply = 0
+    check(during == 0 and view.GetProperty("EnableRenderOnInteraction").GetData() == 1,
+          f"with Auto Apply, the drag leaves rendering to it ({during} renders), then restores the view's")
     translation = unchecked("HandleTranslation")
     moved = [c + t for c, t in zip(unchecked("HandleCenter"), translation)]
     landed = display(moved)
@@ -132,7 +146,8 @@ try:
 
     start = max(range(0, 360, 5), key=score)
     say(f"turn from {start} degrees, centre {center}, display {display(center)}, start {display(ring_point(start))}")
-    drag(lambda t: display(ring_point(start + 40.0 * t)), steps=20)
+    during = drag(lambda t: display(ring_point(start + 40.0 * t)), steps=20)
+    check(during > 0, f"without Auto Apply, the widget renders its moves ({during} renders)")
     rotation = unchecked("HandleRotation")
     say(f"turn: HandleRotation {rotation}")
     check(abs(rotation[0] - 40.0) < 3.0 and abs(rotation[1]) < 3.0 and abs(rotation[2]) < 3.0,
