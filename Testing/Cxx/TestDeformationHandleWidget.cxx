@@ -34,6 +34,7 @@
 #include <functional>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -123,6 +124,25 @@ struct Scene
     this->Recorder->SetInputString(events.c_str());
     this->Recorder->Play();
   }
+
+  // The largest distance of the filter's handle vertices from where the representation's
+  // transform puts their rest positions.
+  double HandleError(vtkDeformationHandleRepresentation* rep)
+  {
+    vtkPolyData* output = this->Filter->GetOutput();
+    vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+      {
+        double expected[3];
+        rep->GetTransform()->TransformPoint(this->Rest->GetPoint(i), expected);
+        worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
+      }
+    }
+    return worst;
+  }
 };
 
 std::string Event(const char* name, double x, double y, int modifiers = 0)
@@ -198,18 +218,7 @@ int PlaceDragRotateResize(int argc, char* argv[])
   Check(std::abs(back[0] - at[0]) < 2.0 && std::abs(back[1] - (at[1] + 90.0)) < 2.0,
     "the handle follows the cursor in the view plane");
   // The surface followed: the handle vertices sit on their targets.
-  vtkPolyData* output = scene.Filter->GetOutput();
-  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-  {
-    if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
-    {
-      double expected[3];
-      rep->GetTransform()->TransformPoint(scene.Rest->GetPoint(i), expected);
-      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
-    }
-  }
+  const double worst = scene.HandleError(rep);
   Check(worst < 2e-3, "the filter's handle vertices follow the widget's transform");
 
   // 3. Rotate: sweep a quarter turn along the ring.
@@ -531,18 +540,7 @@ int RotateAboutEachAxis()
       "a 60-degree sweep on ring " + std::to_string(axis) + " turns the handle 60 degrees about it");
   }
   // The filter follows the last turn.
-  vtkPolyData* output = scene.Filter->GetOutput();
-  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-  {
-    if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
-    {
-      double expected[3];
-      rep->GetTransform()->TransformPoint(scene.Rest->GetPoint(i), expected);
-      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
-    }
-  }
+  const double worst = scene.HandleError(rep);
   Check(worst < 2e-3, "the filter's handle vertices follow the turn");
   Check(scene.Filter->GetNumberOfFactorizations() == factorizations, "turning does not refactor");
 
@@ -667,18 +665,7 @@ int PropertyAccessors()
   scene.Filter->SetHandleTranslation(0.05, -0.02, 0.1);
   scene.Filter->SetHandleRotation(10.0, -35.0, 70.0);
   scene.Filter->Update();
-  vtkPolyData* output = scene.Filter->GetOutput();
-  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-  {
-    if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
-    {
-      double expected[3];
-      rep->GetTransform()->TransformPoint(scene.Rest->GetPoint(i), expected);
-      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(expected, output->GetPoint(i))));
-    }
-  }
+  const double worst = scene.HandleError(rep);
   std::cout << "handle points from the properties vs the representation's transform: " << worst << "\n";
   Check(worst < 2e-3, "the representation's transform is the filter's property transform");
   // Near gimbal lock (y = 90 degrees) the angles still give the same rotation.
@@ -721,47 +708,25 @@ int DeleteMidInteraction()
 
 int main(int argc, char* argv[])
 {
-  const std::string name = argc > 1 ? argv[1] : "";
-  if (name == "PlaceDragRotateResize")
+  const std::map<std::string, std::function<int()>> cases = {
+    { "PlaceDragRotateResize", [&] { return PlaceDragRotateResize(argc, argv); } },
+    { "DeleteMidInteraction", DeleteMidInteraction }, { "PickingManager", PickingManager },
+    { "PlaceWidgetAndBindings", PlaceWidgetAndBindings },
+    { "OrbitClickAndCommit", OrbitClickAndCommit },
+    { "TranslucentHandle", [&] { return TranslucentHandle(argc, argv); } },
+    { "RotateAboutEachAxis", RotateAboutEachAxis },
+    { "ConstrainedMoveAndWheel", ConstrainedMoveAndWheel },
+    { "PropertyAccessors", PropertyAccessors } };
+  const auto found = cases.find(argc > 1 ? argv[1] : "");
+  if (found != cases.end())
   {
-    return PlaceDragRotateResize(argc, argv);
+    return found->second();
   }
-  if (name == "DeleteMidInteraction")
+  std::cerr << "usage: " << argv[0] << " <case> [-V baseline -T temp], the cases:";
+  for (const auto& entry : cases)
   {
-    return DeleteMidInteraction();
+    std::cerr << " " << entry.first;
   }
-  if (name == "PickingManager")
-  {
-    return PickingManager();
-  }
-  if (name == "PlaceWidgetAndBindings")
-  {
-    return PlaceWidgetAndBindings();
-  }
-  if (name == "OrbitClickAndCommit")
-  {
-    return OrbitClickAndCommit();
-  }
-  if (name == "TranslucentHandle")
-  {
-    return TranslucentHandle(argc, argv);
-  }
-  if (name == "RotateAboutEachAxis")
-  {
-    return RotateAboutEachAxis();
-  }
-  if (name == "ConstrainedMoveAndWheel")
-  {
-    return ConstrainedMoveAndWheel();
-  }
-  if (name == "PropertyAccessors")
-  {
-    return PropertyAccessors();
-  }
-  std::cerr << "usage: " << argv[0]
-            << " PlaceDragRotateResize|DeleteMidInteraction|PickingManager|PlaceWidgetAndBindings|"
-               "OrbitClickAndCommit|TranslucentHandle|RotateAboutEachAxis|ConstrainedMoveAndWheel|"
-               "PropertyAccessors"
-               " [-V baseline -T temp]\n";
+  std::cerr << "\n";
   return EXIT_FAILURE;
 }
