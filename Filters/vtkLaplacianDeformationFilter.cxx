@@ -7,7 +7,10 @@
 
 #include "vtkBoundingBox.h"
 #include "vtkDataArray.h"
+#include "vtkCellData.h"
 #include "vtkErrorCode.h"
+#include "vtkExtractSelection.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLinearTransform.h"
@@ -17,7 +20,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkIntArray.h"
 #include "vtkPolyData.h"
+#include "vtkSelection.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
@@ -159,6 +164,11 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   le::LaplacianEditor Editor;
   vtkLaplacianNormalRefresher Normals;
   vtkDataArray* Selection = nullptr;
+  // The handle from a selection on port 1, what it was made from (selection time, input
+  // content time), and whether the ROI grows around it by ROIRadius.
+  vtkSmartPointer<vtkIntArray> SelectedLabels;
+  vtkMTimeType SelectedKey[2] = { 0, 0 };
+  bool GrowFromHandles = false;
   // The current handle maps and result, in the core's frame.
   std::vector<le::AffineMap> Maps;
   le::Positions Solution;
@@ -178,6 +188,23 @@ vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
     });
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  this->SetNumberOfInputPorts(2);
+}
+
+void vtkLaplacianDeformationFilter::SetSelectionData(vtkSelection* selection)
+{
+  this->SetInputData(1, selection);
+}
+
+int vtkLaplacianDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkSelection");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
 }
 
 vtkLaplacianDeformationFilter::~vtkLaplacianDeformationFilter() = default;
@@ -351,6 +378,7 @@ bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
 {
   vtkInternals& internals = *this->Internals;
   internals.Selection = nullptr;
+  internals.GrowFromHandles = false;
   if (input->GetNumberOfPoints() == 0)
   {
     return this->Fail("The input mesh is empty.");
@@ -363,6 +391,10 @@ bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
   if (input->GetNumberOfStrips() > 0)
   {
     return this->Fail("The input has triangle strips; run vtkTriangleFilter first.");
+  }
+  if (auto* selection = vtkSelection::SafeDownCast(this->GetInputDataObject(1, 0)))
+  {
+    return this->LabelSelectedPoints(input, selection);
   }
   if (this->SelectionMode == SELECTION_GEODESIC)
   {
@@ -383,6 +415,64 @@ bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
       "' must be an integer array with one component (0 fixed, 1 ROI, 2+ handle).");
   }
   internals.Selection = selection;
+  return true;
+}
+
+bool vtkLaplacianDeformationFilter::LabelSelectedPoints(vtkPolyData* input, vtkSelection* selection)
+{
+  // vtkExtractSelection, keeping the topology, marks what is selected in a vtkInsidedness
+  // array; its marks become the array mode's labels (2: handle group 0), made again only when
+  // the selection or the input changes.
+  vtkInternals& internals = *this->Internals;
+  if (this->ROIRadius <= 0.0)
+  {
+    return this->Fail("ROIRadius must be positive: with a selection on input port 1, the ROI is "
+                      "every point within ROIRadius of the selected handle.");
+  }
+  const vtkMTimeType key[2] = { selection->GetMTime(),
+    vtkLaplacianSurfaceAdapter::GetContentTime(input) };
+  if (!internals.SelectedLabels || !std::equal(key, key + 2, internals.SelectedKey))
+  {
+    std::copy(key, key + 2, internals.SelectedKey);
+    vtkNew<vtkExtractSelection> extract;
+    extract->PreserveTopologyOn();
+    extract->SetInputData(0, input);
+    extract->SetInputData(1, selection);
+    extract->Update();
+    auto* marked = vtkDataSet::SafeDownCast(extract->GetOutputDataObject(0));
+    vtkDataArray* points = marked ? marked->GetPointData()->GetArray("vtkInsidedness") : nullptr;
+    vtkDataArray* cells = marked ? marked->GetCellData()->GetArray("vtkInsidedness") : nullptr;
+    internals.SelectedLabels = vtkSmartPointer<vtkIntArray>::New();
+    internals.SelectedLabels->SetName("SelectedHandle");
+    internals.SelectedLabels->SetNumberOfValues(input->GetNumberOfPoints());
+    internals.SelectedLabels->FillValue(0);
+    for (vtkIdType i = 0; points && i < points->GetNumberOfTuples(); ++i)
+    {
+      if (points->GetComponent(i, 0) > 0.0)
+      {
+        internals.SelectedLabels->SetValue(i, 2);
+      }
+    }
+    vtkNew<vtkIdList> cellPoints;
+    for (vtkIdType c = 0; cells && c < cells->GetNumberOfTuples(); ++c)
+    {
+      if (cells->GetComponent(c, 0) > 0.0)
+      {
+        input->GetCellPoints(c, cellPoints);
+        for (vtkIdType k = 0; k < cellPoints->GetNumberOfIds(); ++k)
+        {
+          internals.SelectedLabels->SetValue(cellPoints->GetId(k), 2);
+        }
+      }
+    }
+  }
+  const int* labels = internals.SelectedLabels->GetPointer(0);
+  if (std::find(labels, labels + input->GetNumberOfPoints(), 2) == labels + input->GetNumberOfPoints())
+  {
+    return this->Fail("The selection on input port 1 selects no point of the input.");
+  }
+  internals.Selection = internals.SelectedLabels;
+  internals.GrowFromHandles = true;
   return true;
 }
 
@@ -461,11 +551,13 @@ void vtkLaplacianDeformationFilter::ComputeReach(vtkPolyData* rest)
     reach.Margin = -1.0; // nothing labelled, or no polygon: the core reports it on the whole input
     return;
   }
+  // A selection's ROI grows around the labelled points by ROIRadius.
+  const double growth = internals.GrowFromHandles ? this->AbsoluteRadius(this->ROIRadius) : 0.0;
   const double roi = selection ? internals.ReachExtent : this->AbsoluteRadius(this->ROIRadius);
   const double smoothing = this->NormalSmoothingRadius > 0.0
     ? this->AbsoluteRadius(this->NormalSmoothingRadius)
-    : 0.2 * (selection ? 2.0 * roi : roi);
-  reach.Margin = 1.1 * ((selection ? 0.0 : 2.0 * internals.ReachExtent + roi) + smoothing);
+    : 0.2 * (selection ? 2.0 * roi + growth : roi);
+  reach.Margin = 1.1 * ((selection ? growth : 2.0 * internals.ReachExtent + roi) + smoothing);
 }
 
 bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
@@ -512,7 +604,11 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   if (selection)
   {
     region.Selection = le::RegionRequest::Kind::Labeled;
-    region.LabelsVersion = vtkLaplacianSurfaceAdapter::GetContentTime(rest);
+    region.LabelsVersion =
+      std::max(vtkLaplacianSurfaceAdapter::GetContentTime(rest), selection->GetMTime());
+    region.GrowRadius = internals.GrowFromHandles
+      ? this->AbsoluteRadius(this->ROIRadius) * surface.GetScale()
+      : 0.0;
   }
   else
   {
@@ -726,6 +822,9 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   };
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SelectionMode: " << name(this->SelectionMode, { "Geodesic", "Array" }) << "\n";
+  os << indent << "Selection input: "
+     << (this->GetNumberOfInputConnections(1) > 0 ? "connected" : "none")
+     << "\n";
   os << indent << "RadiusUnits: "
      << name(this->RadiusUnits, { "Absolute", "DiagonalFraction" }) << "\n";
   printVector("HandleCenter", this->HandleCenter);

@@ -11,7 +11,9 @@
  * vertex, both measured on the surface, in mesh units or, with SetRadiusUnitsToDiagonalFraction,
  * as fractions of the input's bounding-box diagonal) or from an integer point array selected with
  * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name) whose values
- * are 0 fixed, 1 ROI, 2 handle, and 3, 4, ... further handle groups. The outer AnchorPadding
+ * are 0 fixed, 1 ROI, 2 handle, and 3, 4, ... further handle groups, or from a vtkSelection
+ * on input port 1 (SetSelectionConnection: the selected points are the handle, the ROI lies
+ * within ROIRadius of them). The outer AnchorPadding
  * fraction of the ROI becomes stationary anchors, weighted in proportion to their distance from
  * the handle. Each handle group follows its own vtkLinearTransform applied to its rest
  * positions.
@@ -48,9 +50,11 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
 class vtkPoints;
+class vtkSelection;
 
 class VTKLAPLACIANEDITING_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
 {
@@ -99,6 +103,21 @@ public:
   void SetSelectionModeToGeodesic() { this->SetSelectionMode(SELECTION_GEODESIC); }
   /** Select the handle and ROI from the labelled point array (SetInputArrayToProcess). */
   void SetSelectionModeToArray() { this->SetSelectionMode(SELECTION_ARRAY); }
+
+  /**
+   * An optional vtkSelection on input port 1, as vtkExtractSelection takes it (ParaView's
+   * "Copy Active Selection"), chooses the handle: the selected points, or the points of the
+   * selected cells, are handle group 0, and the ROI is every point within ROIRadius of them on
+   * the surface. Any selection vtkExtractSelection reads works (ids, global ids, frustums,
+   * locations, thresholds). A connected selection takes precedence over SelectionMode;
+   * HandleCenter remains the pivot of HandleRotation.
+   */
+  void SetSelectionConnection(vtkAlgorithmOutput* selection)
+  {
+    this->SetInputConnection(1, selection);
+  }
+  /** The handle's selection as a data object (see SetSelectionConnection); nullptr for none. */
+  void SetSelectionData(vtkSelection* selection);
 
   enum RadiusUnitsTypes
   {
@@ -483,6 +502,7 @@ protected:
   vtkLaplacianDeformationFilter();
   ~vtkLaplacianDeformationFilter() override;
 
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
@@ -544,6 +564,8 @@ private:
   // The stages of EditSurface; each returns false, with an error reported, when the edit
   // cannot go on.
   bool CheckInput(vtkPolyData* input);
+  // The handle from the selection on port 1, as array-mode labels.
+  bool LabelSelectedPoints(vtkPolyData* input, vtkSelection* selection);
   bool UpdateSurfaceGraph(vtkPolyData* rest);
   // The part of the rest surface the edit can reach, for the surface graph.
   void ComputeReach(vtkPolyData* rest);

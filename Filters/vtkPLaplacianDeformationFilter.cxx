@@ -3,6 +3,7 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkErrorCode.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -40,6 +41,16 @@ int vtkPLaplacianDeformationFilter::RequestData(
   }
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    // Every rank has the same connections, so every rank takes this path.
+    vtkErrorMacro(<< "A selection on input port 1 is not supported on more than one process yet "
+                  << "(its ids refer to each piece): label the handle in a point array and use "
+                  << "SetSelectionModeToArray().");
+    this->SetErrorCode(vtkErrorCode::UserError);
+    output->ShallowCopy(input);
+    return 1;
+  }
   vtkNew<vtkPolyData> edited;
   if (this->GatherPieces(input))
   {

@@ -185,17 +185,31 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
   return Finish(mesh, anchorPadding, region);
 }
 
-std::string SelectLabeledRegion(const SurfaceMesh& mesh, const std::vector<int>& labels,
-  double anchorPadding, EditRegion& region, DistanceMethod method)
+std::string SelectLabeledRegion(const SurfaceMesh& mesh, std::vector<int> labels,
+  double anchorPadding, EditRegion& region, DistanceMethod method, double roiRadius)
 {
   region = EditRegion();
+  if (std::any_of(labels.begin(), labels.end(), [](int label) { return label < 0; }))
+  {
+    return "the selection array holds a negative value; use 0 fixed, 1 ROI, 2+ handle";
+  }
+  if (roiRadius > 0.0)
+  {
+    std::vector<int> handles;
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      if (labels[v] >= 2 && mesh.GetValence(v) > 0)
+      {
+        handles.push_back(v);
+      }
+    }
+    GeodesicSearch(mesh, method).Visit(handles, roiRadius, [&](int v, double) {
+      labels[v] = std::max(labels[v], 1);
+    });
+  }
   std::vector<int> handles;
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
-    if (labels[v] < 0)
-    {
-      return "the selection array holds a negative value; use 0 fixed, 1 ROI, 2+ handle";
-    }
     if (labels[v] == 0)
     {
       continue;

@@ -52,10 +52,12 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
   DistanceMethod method = DistanceMethod::FastMarching);
 
 /// Per surface vertex labels: 0 fixed, 1 ROI, 2 + g handle group g (the .sel convention).
-/// Anchors as above: the padding lines the border with the fixed part, wherever the handles
-/// are. Returns an error message, empty on success.
-std::string SelectLabeledRegion(const SurfaceMesh& mesh, const std::vector<int>& labels,
-  double anchorPadding, EditRegion& region, DistanceMethod method = DistanceMethod::FastMarching);
+/// With `roiRadius` > 0, vertices labelled 0 within it of the handles join the ROI too (handles
+/// chosen by a selection, the ROI around them). Anchors as above: the padding lines the border
+/// with the fixed part, wherever the handles are. Returns an error message, empty on success.
+std::string SelectLabeledRegion(const SurfaceMesh& mesh, std::vector<int> labels,
+  double anchorPadding, EditRegion& region, DistanceMethod method = DistanceMethod::FastMarching,
+  double roiRadius = 0.0);
 }
 
 #endif

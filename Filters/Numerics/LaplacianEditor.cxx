@@ -13,7 +13,7 @@ bool RegionRequest::operator==(const RegionRequest& other) const
   }
   if (this->Selection == Kind::Labeled)
   {
-    return this->LabelsVersion == other.LabelsVersion;
+    return this->LabelsVersion == other.LabelsVersion && this->GrowRadius == other.GrowRadius;
   }
   return this->CenterVertex == other.CenterVertex && this->HandleRadius == other.HandleRadius &&
     this->ROIRadius == other.ROIRadius;
@@ -56,8 +56,8 @@ std::string LaplacianEditor::SelectRegion(
 {
   if (request.Selection == RegionRequest::Kind::Labeled)
   {
-    return SelectLabeledRegion(
-      *this->Mesh, labels(), request.AnchorPadding, this->Region, request.Distances);
+    return SelectLabeledRegion(*this->Mesh, labels(), request.AnchorPadding, this->Region,
+      request.Distances, request.GrowRadius);
   }
   return SelectGeodesicRegion(*this->Mesh, request.CenterVertex, request.HandleRadius,
     request.ROIRadius, request.AnchorPadding, this->Region, request.Distances);

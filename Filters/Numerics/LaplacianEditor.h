@@ -46,6 +46,8 @@ struct RegionRequest
   double AnchorPadding = 0.1;
   /// Labeled: changes whenever the labels may have changed.
   std::uint64_t LabelsVersion = 0;
+  /// Labeled: vertices within it of the handles join the ROI (0: the labels alone).
+  double GrowRadius = 0.0;
   /// How distances are measured (region, anchors, normal smoothing).
   DistanceMethod Distances = DistanceMethod::FastMarching;
 

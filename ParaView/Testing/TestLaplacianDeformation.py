@@ -8,7 +8,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from paraview import servermanager  # noqa: E402
-from paraview.simple import LoadPlugin, SaveScreenshot  # noqa: E402
+from paraview.vtk import vtkIntArray  # noqa: E402
+from paraview.simple import (IDSelectionSource, LaplacianDeformation, LoadPlugin,  # noqa: E402
+                             SaveScreenshot, TrivialProducer)
 
 LoadPlugin(sys.argv[1], remote=False)
 import LaplacianDeformationScene as scene  # noqa: E402
@@ -37,6 +39,42 @@ if handles == 0:
 if moved_outside:
     failures.append(f"{moved_outside} points outside the region moved")
 print(f"{handles} handle points on target; outside untouched; {deform.ListProperties()}")
+
+
+def same_edit(source, **properties):
+    """A LaplacianDeformation of `source` with deform's settings but the given ones."""
+    other = LaplacianDeformation(Input=source, **properties)
+    for name in ("HandleCenter", "ROIRadius", "HandleTranslation", "HandleRotation", "RotationMode"):
+        other.SetPropertyWithName(name, deform.GetPropertyValue(name))
+    return servermanager.Fetch(other)
+
+
+# The handle as a point selection (ParaView's (process, index) id pairs), the ROI within
+# ROIRadius of it: the handle is exactly the selection, and the edit matches the array mode's
+# with the same labels.
+ids = [i for i in range(rest.GetNumberOfPoints()) if roles.GetValue(i) == 3]
+selection = IDSelectionSource(FieldType="POINT", IDs=[x for i in ids for x in (0, i)])
+by_selection = same_edit(deform.Input, Selection=selection)
+selected_roles = by_selection.GetPointData().GetArray("EditRole")
+selected = [i for i in range(rest.GetNumberOfPoints()) if selected_roles.GetValue(i) == 3]
+if selected != ids:
+    failures.append(f"the handle from the selection has {len(selected)} points, not the {len(ids)} selected")
+labeled = rest.NewInstance()
+labeled.ShallowCopy(rest)
+labels = vtkIntArray()
+labels.SetName("Labels")
+for i in range(rest.GetNumberOfPoints()):
+    role = selected_roles.GetValue(i)
+    labels.InsertNextValue(2 if role == 3 else (1 if role else 0))
+labeled.GetPointData().AddArray(labels)
+producer = TrivialProducer()
+producer.GetClientSideObject().SetOutput(labeled)
+by_array = same_edit(producer, SelectionMode="Array", SelectInputArray=["POINTS", "Labels"])
+gap = max(math.dist(by_selection.GetPoint(i), by_array.GetPoint(i)) for i in range(rest.GetNumberOfPoints()))
+if gap > 1e-9:
+    failures.append(f"the edit by point selection differs from the edit by array by {gap}")
+print(f"point selection of {len(ids)} handle points: ROI {labels.GetNumberOfValues()} points labelled, "
+      f"{gap} from the array edit")
 
 view = scene.show(deform)
 SaveScreenshot(sys.argv[3], view, ImageResolution=[600, 500])

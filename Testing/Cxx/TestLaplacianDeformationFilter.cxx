@@ -18,6 +18,10 @@
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
 #include "vtkSignedCharArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkSelection.h"
+#include "vtkSelectionNode.h"
 
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -446,6 +450,23 @@ TEST_P(FilterBadInput, ReportsAnErrorAndPassesTheInputThrough)
 
 namespace
 {
+// An index selection of points or cells, as ParaView's "Copy Active Selection" gives.
+vtkSmartPointer<vtkSelection> IdSelection(const std::vector<vtkIdType>& ids, int field)
+{
+  vtkNew<vtkIdTypeArray> list;
+  for (vtkIdType id : ids)
+  {
+    list->InsertNextValue(id);
+  }
+  vtkNew<vtkSelectionNode> node;
+  node->SetContentType(vtkSelectionNode::INDICES);
+  node->SetFieldType(field);
+  node->SetSelectionList(list);
+  auto selection = vtkSmartPointer<vtkSelection>::New();
+  selection->AddNode(node);
+  return selection;
+}
+
 void AddSelection(vtkPolyData* input, vtkDataArray* array, vtkLaplacianDeformationFilter* filter)
 {
   array->SetName("Selection");
@@ -518,6 +539,11 @@ INSTANTIATE_TEST_SUITE_P(Cases, FilterBadInput,
         array->SetValue(0, 0);
       },
       "no handle vertex" },
+    BadInput{ "SelectionInputSelectsNothing",
+      [](vtkPolyData*, vtkLaplacianDeformationFilter* f) {
+        f->SetSelectionData(IdSelection({}, vtkSelectionNode::POINT));
+      },
+      "selects no point of the input" },
     BadInput{ "UnreferencedVertexInROI",
       [](vtkPolyData* in, vtkLaplacianDeformationFilter* f) {
         in->GetPoints()->InsertNextPoint(0.5, 0.5, 1.0);
@@ -645,4 +671,108 @@ TEST(Filter, TheSurfaceGraphFollowsTheRegionNotTheInput)
   EXPECT_EQ(array->GetNumberOfROIVertices(), roi);
   EXPECT_LT(array->GetNumberOfSurfaceVertices(), 4 * roi);
   EXPECT_EQ(array->GetNumberOfHandleVertices(), geodesic->GetNumberOfHandleVertices());
+}
+
+TEST(Filter, AHandleFromASelectionInputEditsAsTheSameArraySelection)
+{
+  // Points within 0.08 of a sphere point, selected by id on port 1: the handle is exactly
+  // them, the ROI lies within ROIRadius of them, and the edit matches the array mode's with
+  // the same labels (1e-9). Moves re-solve; a new selection selects again.
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(80);
+  source->SetPhiResolution(80);
+  source->Update();
+  vtkPolyData* sphere = source->GetOutput();
+  const double center[3] = { 0.3, 0.0, 0.4 };
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    if (vtkMath::Distance2BetweenPoints(sphere->GetPoint(i), center) < 0.08 * 0.08)
+    {
+      ids.push_back(i);
+    }
+  }
+  ASSERT_GT(ids.size(), 10u);
+  auto selected = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  selected->SetInputData(sphere);
+  selected->SetSelectionData(IdSelection(ids, vtkSelectionNode::POINT));
+  selected->SetHandleCenter(const_cast<double*>(center));
+  selected->SetROIRadius(0.35);
+  selected->SetHandleTranslation(0.0, 0.05, 0.1);
+  ErrorCatcher errors(selected);
+  selected->Update();
+  EXPECT_EQ(errors.Messages, "");
+  vtkSignedCharArray* roles = Roles(selected->GetOutput());
+  std::vector<vtkIdType> handle;
+  double farthest = 0.0;
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    if (roles->GetValue(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+    {
+      handle.push_back(i);
+    }
+    if (roles->GetValue(i) != vtkLaplacianDeformationFilter::ROLE_FIXED)
+    {
+      double p[3], q[3], nearest = VTK_DOUBLE_MAX;
+      sphere->GetPoint(i, p);
+      for (vtkIdType id : ids)
+      {
+        sphere->GetPoint(id, q);
+        nearest = std::min(nearest, vtkMath::Distance2BetweenPoints(p, q));
+      }
+      farthest = std::max(farthest, std::sqrt(nearest));
+    }
+  }
+  EXPECT_EQ(handle, ids);
+  EXPECT_GT(selected->GetNumberOfROIVertices(), 3 * static_cast<int>(ids.size()));
+  EXPECT_LE(farthest, 0.35); // a straight line is never longer than the path on the surface
+  EXPECT_GT(farthest, 0.25);
+
+  vtkNew<vtkPolyData> labeled;
+  labeled->ShallowCopy(sphere);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfTuples(sphere->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    const int role = roles->GetValue(i);
+    labels->SetValue(i, role == vtkLaplacianDeformationFilter::ROLE_HANDLE ? 2 : (role ? 1 : 0));
+  }
+  labeled->GetPointData()->AddArray(labels);
+  auto array = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  array->SetInputData(labeled);
+  array->SetSelectionModeToArray();
+  array->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  array->SetHandleCenter(const_cast<double*>(center));
+  array->SetHandleTranslation(selected->GetHandleTranslation());
+  array->Update();
+  EXPECT_LT(MaxPointDistance(array->GetOutput(), selected->GetOutput()), 1e-9);
+
+  const int factorizations = selected->GetNumberOfFactorizations();
+  selected->SetHandleTranslation(0.0, 0.0, 0.2);
+  selected->Update();
+  EXPECT_EQ(selected->GetNumberOfFactorizations(), factorizations) << "a move only re-solves";
+  ids.resize(ids.size() / 2);
+  selected->SetSelectionData(IdSelection(ids, vtkSelectionNode::POINT));
+  selected->Update();
+  EXPECT_EQ(selected->GetNumberOfHandleVertices(), static_cast<int>(ids.size()));
+  EXPECT_GT(selected->GetNumberOfFactorizations(), factorizations) << "a new selection selects again";
+}
+
+TEST(Filter, ASelectionOfCellsMakesTheirPointsTheHandle)
+{
+  auto input = BumpyPlane(20);
+  auto filter = PlaneEdit(input);
+  const vtkIdType cell = input->GetNumberOfCells() / 2;
+  filter->SetSelectionData(IdSelection({ cell }, vtkSelectionNode::CELL));
+  filter->SetHandleTransform(Translation(0, 0, 0.1));
+  filter->Update();
+  vtkNew<vtkIdList> corners;
+  input->GetCellPoints(cell, corners);
+  EXPECT_EQ(filter->GetNumberOfHandleVertices(), corners->GetNumberOfIds());
+  vtkSignedCharArray* roles = Roles(filter->GetOutput());
+  for (vtkIdType k = 0; k < corners->GetNumberOfIds(); ++k)
+  {
+    EXPECT_EQ(roles->GetValue(corners->GetId(k)), vtkLaplacianDeformationFilter::ROLE_HANDLE);
+  }
 }
