@@ -626,6 +626,36 @@ TEST(Filter, TranslationAndRotationPropertiesMatchTheTransform)
   EXPECT_GT(MaxPointDistance(input, byProperties->GetOutput()), 0.1);
 }
 
+namespace
+{
+// The array-mode edit of `rest` whose labels are the roles of `edited` (a handle stays a handle,
+// the rest of the ROI is ROI), with the same handle centre and translation.
+vtkSmartPointer<vtkLaplacianDeformationFilter> SameEditByArray(
+  vtkPolyData* rest, vtkLaplacianDeformationFilter* edited)
+{
+  vtkNew<vtkPolyData> labeled;
+  labeled->ShallowCopy(rest);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfTuples(rest->GetNumberOfPoints());
+  vtkSignedCharArray* roles = Roles(edited->GetOutput());
+  for (vtkIdType i = 0; i < rest->GetNumberOfPoints(); ++i)
+  {
+    const int role = roles->GetValue(i);
+    labels->SetValue(i, role == vtkLaplacianDeformationFilter::ROLE_HANDLE ? 2 : (role ? 1 : 0));
+  }
+  labeled->GetPointData()->AddArray(labels);
+  auto array = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  array->SetInputData(labeled);
+  array->SetSelectionModeToArray();
+  array->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  array->SetHandleCenter(edited->GetHandleCenter());
+  array->SetHandleTranslation(edited->GetHandleTranslation());
+  array->Update();
+  return array;
+}
+}
+
 TEST(Filter, TheSurfaceGraphFollowsTheRegionNotTheInput)
 {
   // A sphere of 250k points and a region of about 1% of it, selected geodesically and by
@@ -649,25 +679,7 @@ TEST(Filter, TheSurfaceGraphFollowsTheRegionNotTheInput)
   EXPECT_LT(roi, sphere->GetNumberOfPoints() / 50);
   EXPECT_LT(geodesic->GetNumberOfSurfaceVertices(), 4 * roi);
 
-  vtkNew<vtkPolyData> labeled;
-  labeled->ShallowCopy(sphere);
-  vtkNew<vtkIntArray> labels;
-  labels->SetName("Labels");
-  labels->SetNumberOfTuples(sphere->GetNumberOfPoints());
-  vtkSignedCharArray* roles = Roles(geodesic->GetOutput());
-  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
-  {
-    const int role = roles->GetValue(i);
-    labels->SetValue(i, role == vtkLaplacianDeformationFilter::ROLE_HANDLE ? 2 : (role ? 1 : 0));
-  }
-  labeled->GetPointData()->AddArray(labels);
-  auto array = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
-  array->SetInputData(labeled);
-  array->SetSelectionModeToArray();
-  array->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
-  array->SetHandleCenter(geodesic->GetHandleCenter());
-  array->SetHandleTranslation(geodesic->GetHandleTranslation());
-  array->Update();
+  auto array = SameEditByArray(sphere, geodesic);
   EXPECT_EQ(array->GetNumberOfROIVertices(), roi);
   EXPECT_LT(array->GetNumberOfSurfaceVertices(), 4 * roi);
   EXPECT_EQ(array->GetNumberOfHandleVertices(), geodesic->GetNumberOfHandleVertices());
@@ -728,24 +740,7 @@ TEST(Filter, AHandleFromASelectionInputEditsAsTheSameArraySelection)
   EXPECT_LE(farthest, 0.35); // a straight line is never longer than the path on the surface
   EXPECT_GT(farthest, 0.25);
 
-  vtkNew<vtkPolyData> labeled;
-  labeled->ShallowCopy(sphere);
-  vtkNew<vtkIntArray> labels;
-  labels->SetName("Labels");
-  labels->SetNumberOfTuples(sphere->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
-  {
-    const int role = roles->GetValue(i);
-    labels->SetValue(i, role == vtkLaplacianDeformationFilter::ROLE_HANDLE ? 2 : (role ? 1 : 0));
-  }
-  labeled->GetPointData()->AddArray(labels);
-  auto array = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
-  array->SetInputData(labeled);
-  array->SetSelectionModeToArray();
-  array->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
-  array->SetHandleCenter(const_cast<double*>(center));
-  array->SetHandleTranslation(selected->GetHandleTranslation());
-  array->Update();
+  auto array = SameEditByArray(sphere, selected);
   EXPECT_LT(MaxPointDistance(array->GetOutput(), selected->GetOutput()), 1e-9);
 
   const int factorizations = selected->GetNumberOfFactorizations();
