@@ -6,13 +6,14 @@
 #include "vtkLaplacianSurfaceAdapter.h"
 
 #include "vtkBoundingBox.h"
-#include "vtkDataArray.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkExtractSelection.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkLinearTransform.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
@@ -20,14 +21,13 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkIntArray.h"
 #include "vtkPolyData.h"
 #include "vtkSelection.h"
-#include "vtkSMPTools.h"
+#include "vtkSignedCharArray.h"
 #include "vtkSmartPointer.h"
+#include "vtkSMPTools.h"
 #include "vtkTransform.h"
 #include "vtkVariant.h"
-#include "vtkSignedCharArray.h"
 #include <vtksys/SystemInformation.hxx>
 
 #include <algorithm>
@@ -164,11 +164,10 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   le::LaplacianEditor Editor;
   vtkLaplacianNormalRefresher Normals;
   vtkDataArray* Selection = nullptr;
-  // The handle from a selection on port 1, what it was made from (selection time, input
-  // content time), and whether the ROI grows around it by ROIRadius.
+  // The handle from a selection on port 1 (then Selection points to it), and what it was made
+  // from (selection time, input content time).
   vtkSmartPointer<vtkIntArray> SelectedLabels;
   vtkMTimeType SelectedKey[2] = { 0, 0 };
-  bool GrowFromHandles = false;
   // The current handle maps and result, in the core's frame.
   std::vector<le::AffineMap> Maps;
   le::Positions Solution;
@@ -378,7 +377,6 @@ bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
 {
   vtkInternals& internals = *this->Internals;
   internals.Selection = nullptr;
-  internals.GrowFromHandles = false;
   if (input->GetNumberOfPoints() == 0)
   {
     return this->Fail("The input mesh is empty.");
@@ -396,6 +394,7 @@ bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
   {
     return this->LabelSelectedPoints(input, selection);
   }
+  internals.SelectedLabels = nullptr; // a point each: not kept once the selection is gone
   if (this->SelectionMode == SELECTION_GEODESIC)
   {
     return this->HandleRadius > 0.0 && this->ROIRadius > 0.0
@@ -472,8 +471,15 @@ bool vtkLaplacianDeformationFilter::LabelSelectedPoints(vtkPolyData* input, vtkS
     return this->Fail("The selection on input port 1 selects no point of the input.");
   }
   internals.Selection = internals.SelectedLabels;
-  internals.GrowFromHandles = true;
   return true;
+}
+
+double vtkLaplacianDeformationFilter::SelectionGrowth() const
+{
+  const vtkInternals& internals = *this->Internals;
+  const bool fromSelection =
+    internals.SelectedLabels && internals.Selection == internals.SelectedLabels;
+  return fromSelection ? this->AbsoluteRadius(this->ROIRadius) : 0.0;
 }
 
 vtkPolyData* vtkLaplacianDeformationFilter::RestSurface(vtkPolyData* input)
@@ -551,8 +557,7 @@ void vtkLaplacianDeformationFilter::ComputeReach(vtkPolyData* rest)
     reach.Margin = -1.0; // nothing labelled, or no polygon: the core reports it on the whole input
     return;
   }
-  // A selection's ROI grows around the labelled points by ROIRadius.
-  const double growth = internals.GrowFromHandles ? this->AbsoluteRadius(this->ROIRadius) : 0.0;
+  const double growth = this->SelectionGrowth();
   const double roi = selection ? internals.ReachExtent : this->AbsoluteRadius(this->ROIRadius);
   const double smoothing = this->NormalSmoothingRadius > 0.0
     ? this->AbsoluteRadius(this->NormalSmoothingRadius)
@@ -606,9 +611,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
     region.Selection = le::RegionRequest::Kind::Labeled;
     region.LabelsVersion =
       std::max(vtkLaplacianSurfaceAdapter::GetContentTime(rest), selection->GetMTime());
-    region.GrowRadius = internals.GrowFromHandles
-      ? this->AbsoluteRadius(this->ROIRadius) * surface.GetScale()
-      : 0.0;
+    region.GrowRadius = this->SelectionGrowth() * surface.GetScale();
   }
   else
   {

@@ -566,6 +566,9 @@ private:
   bool CheckInput(vtkPolyData* input);
   // The handle from the selection on port 1, as array-mode labels.
   bool LabelSelectedPoints(vtkPolyData* input, vtkSelection* selection);
+  // How far, in mesh units, the ROI reaches around a selection's handle (ROIRadius); 0 when
+  // the labels come from an array, which holds the ROI itself.
+  double SelectionGrowth() const;
   bool UpdateSurfaceGraph(vtkPolyData* rest);
   // The part of the rest surface the edit can reach, for the surface graph.
   void ComputeReach(vtkPolyData* rest);

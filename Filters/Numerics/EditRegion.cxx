@@ -189,25 +189,28 @@ std::string SelectLabeledRegion(const SurfaceMesh& mesh, std::vector<int> labels
   double anchorPadding, EditRegion& region, DistanceMethod method, double roiRadius)
 {
   region = EditRegion();
-  if (std::any_of(labels.begin(), labels.end(), [](int label) { return label < 0; }))
+  std::vector<int> handles;
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
-    return "the selection array holds a negative value; use 0 fixed, 1 ROI, 2+ handle";
+    if (labels[v] < 0)
+    {
+      return "the selection array holds a negative value; use 0 fixed, 1 ROI, 2+ handle";
+    }
+    if (labels[v] >= 2)
+    {
+      handles.push_back(v);
+    }
+  }
+  if (handles.empty())
+  {
+    return "the selection array marks no handle vertex (value 2 or more)";
   }
   if (roiRadius > 0.0)
   {
-    std::vector<int> handles;
-    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
-    {
-      if (labels[v] >= 2 && mesh.GetValence(v) > 0)
-      {
-        handles.push_back(v);
-      }
-    }
     GeodesicSearch(mesh, method).Visit(handles, roiRadius, [&](int v, double) {
       labels[v] = std::max(labels[v], 1);
     });
   }
-  std::vector<int> handles;
   for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
   {
     if (labels[v] == 0)
@@ -222,14 +225,6 @@ std::string SelectLabeledRegion(const SurfaceMesh& mesh, std::vector<int> labels
     region.Vertices.push_back(v);
     region.HandleGroups.push_back(labels[v] >= 2 ? labels[v] - 2 : -1);
     region.NumberOfHandleGroups = std::max(region.NumberOfHandleGroups, labels[v] - 1);
-    if (labels[v] >= 2)
-    {
-      handles.push_back(v);
-    }
-  }
-  if (handles.empty())
-  {
-    return "the selection array marks no handle vertex (value 2 or more)";
   }
   // Distances from the handles through the ROI.
   std::vector<int> local(mesh.GetNumberOfVertices(), -1);
