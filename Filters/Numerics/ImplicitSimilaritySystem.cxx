@@ -2,7 +2,10 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 namespace LaplacianEditing
 {
@@ -41,6 +44,111 @@ Eigen::Matrix<double, 3, 4> ApplyToDelta(const Eigen::Vector3d& delta)
   g.col(3) = Eigen::Vector3d::UnitZ().cross(delta);
   return g;
 }
+
+// The residual rows of one ROI vertex, dense over the ROI vertices they touch.
+struct VertexRows
+{
+  std::vector<int> Columns; // ROI rows, sorted
+  Eigen::MatrixXd Jacobian; // equations x 3 Columns.size()
+  Eigen::VectorXd Known;
+
+  void Start(int equations)
+  {
+    std::sort(this->Columns.begin(), this->Columns.end());
+    this->Columns.erase(std::unique(this->Columns.begin(), this->Columns.end()), this->Columns.end());
+    this->Jacobian.setZero(equations, 3 * static_cast<Eigen::Index>(this->Columns.size()));
+    this->Known.setZero(equations);
+  }
+
+  int Column(int roiRow) const
+  {
+    return static_cast<int>(
+      std::lower_bound(this->Columns.begin(), this->Columns.end(), roiRow) - this->Columns.begin());
+  }
+};
+
+// A^T A and A^T k of a system given vertex by vertex, in 3 x 3 blocks between ROI vertices.
+class BlockNormalEquations
+{
+public:
+  explicit BlockNormalEquations(int vertices)
+    : Blocks(vertices)
+    , RightHandSide(Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(vertices)))
+  {
+  }
+
+  void Add(const VertexRows& rows)
+  {
+    const Eigen::MatrixXd product = rows.Jacobian.transpose() * rows.Jacobian;
+    const Eigen::VectorXd projected = rows.Jacobian.transpose() * rows.Known;
+    const int size = static_cast<int>(rows.Columns.size());
+    for (int a = 0; a < size; ++a)
+    {
+      this->RightHandSide.segment<3>(3 * rows.Columns[a]) += projected.segment<3>(3 * a);
+      for (int b = 0; b < size; ++b)
+      {
+        this->Block(rows.Columns[a], rows.Columns[b]) += product.block<3, 3>(3 * a, 3 * b);
+      }
+    }
+  }
+
+  /// The symmetric matrix, with `diagonal[k]` added to the three diagonal entries of vertex k.
+  Eigen::SparseMatrix<double> Matrix(const Eigen::VectorXd& diagonal)
+  {
+    const Eigen::Index size = 3 * static_cast<Eigen::Index>(this->Blocks.size());
+    Eigen::Index nonZeros = 0;
+    for (auto& row : this->Blocks)
+    {
+      std::sort(row.begin(), row.end(),
+        [](const BlockEntry& x, const BlockEntry& y) { return x.first < y.first; });
+      nonZeros += 9 * static_cast<Eigen::Index>(row.size());
+    }
+    Eigen::SparseMatrix<double> matrix(size, size);
+    matrix.resizeNonZeros(nonZeros);
+    Eigen::Index entry = 0;
+    // Column 3a + c holds block (b, a) = block (a, b)^T for every b of row a, in order.
+    for (std::size_t a = 0; a < this->Blocks.size(); ++a)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        matrix.outerIndexPtr()[3 * a + c] = static_cast<int>(entry);
+        for (const BlockEntry& block : this->Blocks[a])
+        {
+          for (int r = 0; r < 3; ++r)
+          {
+            const bool onDiagonal = block.first == static_cast<int>(a) && r == c;
+            matrix.innerIndexPtr()[entry] = 3 * block.first + r;
+            matrix.valuePtr()[entry++] = block.second(c, r) + (onDiagonal ? diagonal[a] : 0.0);
+          }
+        }
+      }
+    }
+    matrix.outerIndexPtr()[size] = static_cast<int>(entry);
+    return matrix;
+  }
+
+  const Eigen::VectorXd& GetRightHandSide() const { return this->RightHandSide; }
+
+private:
+  using BlockEntry = std::pair<int, Eigen::Matrix3d>;
+
+  Eigen::Matrix3d& Block(int row, int column)
+  {
+    auto& entries = this->Blocks[row];
+    for (auto& entry : entries)
+    {
+      if (entry.first == column)
+      {
+        return entry.second;
+      }
+    }
+    entries.emplace_back(column, Eigen::Matrix3d::Zero());
+    return entries.back().second;
+  }
+
+  std::vector<std::vector<BlockEntry>> Blocks;
+  Eigen::VectorXd RightHandSide;
+};
 }
 
 std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
@@ -78,11 +186,13 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   this->Fits.resize(n);
   this->FitOffsets.resize(n);
 
-  // The residual rows: per vertex (the paper's, Eq. 12) or per one-ring edge. Each row is
-  // sum_c a_c v'_c - T_i(V') e = k with T_i(V') e = G(e) (Fits ring + offset): `Add` collects
-  // the T part, the unknown or known ring members, and the constants.
-  std::vector<Eigen::Triplet<double>> triplets;
-  std::vector<double> known;
+  // The residual rows: per vertex (the paper's, Eq. 12) or per one-ring edge. All rows of ROI
+  // vertex `row` act on its ring (and, in the paper's form, on its operator row), so each
+  // vertex contributes a small dense block J^T J to the normal matrix, accumulated directly:
+  // forming A and A^T A as sparse products took half the setup and most of its memory.
+  // Each row is sum_c a_c v'_c - T_i(V') e = k with T_i(V') e = G(e) (Fits ring + offset).
+  BlockNormalEquations normal(n);
+  VertexRows rows;
   const auto& laplacian = plain.GetRegionOperator();
   const Positions& fixedPart = plain.GetFixedPart();
   auto addTransformTerm = [&](int equation, int row, const Eigen::Vector3d& e, double scale) {
@@ -90,31 +200,17 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     const int size = this->RingOffsets[row + 1] - begin;
     const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
     const Eigen::MatrixXd transform = apply * this->Fits[row];
-    const Eigen::Vector3d constant = apply * this->FitOffsets[row];
-    for (int a = 0; a < 3; ++a)
-    {
-      known[equation + a] += scale * constant[a];
-    }
+    rows.Known.segment<3>(equation) += scale * apply * this->FitOffsets[row];
     for (int q = 0; q < size; ++q)
     {
       const int member = this->RingRoiRows[begin + q];
       const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
       if (member < 0)
       {
-        const Eigen::Vector3d term = block * this->RingRest.row(begin + q).transpose();
-        for (int a = 0; a < 3; ++a)
-        {
-          known[equation + a] += term[a];
-        }
+        rows.Known.segment<3>(equation) += block * this->RingRest.row(begin + q).transpose();
         continue;
       }
-      for (int a = 0; a < 3; ++a)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          triplets.emplace_back(equation + a, 3 * member + c, -block(a, c));
-        }
-      }
+      rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)) -= block;
     }
   };
   for (int row = 0; row < n; ++row)
@@ -143,26 +239,34 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
       this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
     }
 
+    rows.Columns.clear();
+    for (int q = 0; q < size; ++q)
+    {
+      if (this->RingRoiRows[begin + q] >= 0)
+      {
+        rows.Columns.push_back(this->RingRoiRows[begin + q]);
+      }
+    }
     if (!formulation.PerEdge)
     {
       // D(V')_i - T_i(V') delta_i = -fixed part.
-      const int equation = static_cast<int>(known.size());
-      known.resize(known.size() + 3, 0.0);
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
       {
-        for (int c = 0; c < 3; ++c)
-        {
-          triplets.emplace_back(equation + c, 3 * static_cast<int>(it.col()) + c, it.value());
-        }
+        rows.Columns.push_back(static_cast<int>(it.col()));
       }
-      for (int c = 0; c < 3; ++c)
+      rows.Start(3);
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
       {
-        known[equation + c] -= fixedPart(row, c);
+        rows.Jacobian.block<3, 3>(0, 3 * rows.Column(static_cast<int>(it.col()))).diagonal().array() +=
+          it.value();
       }
-      addTransformTerm(equation, row, this->RestDelta.row(row).transpose(), 1.0);
+      rows.Known.head<3>() -= fixedPart.row(row).transpose();
+      addTransformTerm(0, row, this->RestDelta.row(row).transpose(), 1.0);
+      normal.Add(rows);
       continue;
     }
     // sqrt(w_ij) ((v'_i - v'_j) - T_i(V') (v_i - v_j)) = 0, with the row's weights.
+    rows.Start(3 * (size - 1));
     const std::vector<double> weights = edgeWeights.EdgeWeights(region.Vertices[row]);
     double total = 0.0;
     for (double w : weights)
@@ -172,36 +276,24 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     for (int q = 1; q < size; ++q)
     {
       const double scale = std::sqrt(weights[q - 1] / total);
-      const int equation = static_cast<int>(known.size());
-      known.resize(known.size() + 3, 0.0);
+      const int equation = 3 * (q - 1);
       const int member = this->RingRoiRows[begin + q];
-      for (int c = 0; c < 3; ++c)
+      rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(row)).diagonal().array() += scale;
+      if (member >= 0)
       {
-        triplets.emplace_back(equation + c, 3 * row + c, scale);
-        if (member >= 0)
-        {
-          triplets.emplace_back(equation + c, 3 * member + c, -scale);
-        }
-        else
-        {
-          known[equation + c] += scale * this->RingRest(begin + q, c);
-        }
+        rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)).diagonal().array() -= scale;
+      }
+      else
+      {
+        rows.Known.segment<3>(equation) += scale * this->RingRest.row(begin + q).transpose();
       }
       addTransformTerm(equation, row,
         (this->RingRest.row(begin) - this->RingRest.row(begin + q)).transpose(), scale);
     }
+    normal.Add(rows);
   }
-  Eigen::SparseMatrix<double> system(static_cast<Eigen::Index>(known.size()), 3 * n);
-  system.setFromTriplets(triplets.begin(), triplets.end());
-  const Eigen::SparseMatrix<double> transposed = system.transpose();
-  Eigen::SparseMatrix<double> normalMatrix = transposed * system;
-  const Eigen::VectorXd& squaredWeights = plain.GetSquaredWeights();
-  for (int k = 0; k < 3 * n; ++k)
-  {
-    normalMatrix.coeffRef(k, k) += squaredWeights[k / 3];
-  }
-  normalMatrix.makeCompressed();
-  this->KnownRightHandSide = transposed * Eigen::Map<const Eigen::VectorXd>(known.data(), known.size());
+  const Eigen::SparseMatrix<double> normalMatrix = normal.Matrix(plain.GetSquaredWeights());
+  this->KnownRightHandSide = normal.GetRightHandSide();
   const std::string error = this->Factor.Factorize(
     normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
   if (!error.empty())
@@ -239,17 +331,25 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   return {};
 }
 
-Positions ImplicitSimilaritySystem::Solve(const std::vector<AffineMap>& handleMaps) const
+Positions ImplicitSimilaritySystem::Solve(
+  const std::vector<AffineMap>& handleMaps, const ParallelFor& loop) const
 {
-  Eigen::VectorXd solution = this->RestSolution;
-  for (std::size_t g = 0; g < this->GroupResponses.size(); ++g)
-  {
-    const Eigen::Matrix<double, 3, 4, Eigen::RowMajor> map =
-      g < handleMaps.size() ? handleMaps[g] : AffineMap::Identity();
-    solution.noalias() +=
-      this->GroupResponses[g] * Eigen::Map<const Eigen::Matrix<double, 12, 1>>(map.data());
-  }
-  return Deinterleave(solution);
+  // Row blocks in parallel: the responses are 3n x 12 per group, too large to stay in cache,
+  // so a move is bound by reading them.
+  Positions positions(this->NumberOfVertices, 3);
+  loop(0, this->NumberOfVertices, [&](int first, int last) {
+    const Eigen::Index rows = 3 * static_cast<Eigen::Index>(last - first);
+    Eigen::VectorXd solution = this->RestSolution.segment(3 * first, rows);
+    for (std::size_t g = 0; g < this->GroupResponses.size(); ++g)
+    {
+      const Eigen::Matrix<double, 3, 4, Eigen::RowMajor> map =
+        g < handleMaps.size() ? handleMaps[g] : AffineMap::Identity();
+      solution.noalias() += this->GroupResponses[g].middleRows(3 * first, rows) *
+        Eigen::Map<const Eigen::Matrix<double, 12, 1>>(map.data());
+    }
+    positions.middleRows(first, last - first) = Deinterleave(solution);
+  });
+  return positions;
 }
 
 Positions ImplicitSimilaritySystem::SolveDirect(

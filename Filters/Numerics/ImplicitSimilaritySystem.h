@@ -44,7 +44,8 @@ public:
     const ImplicitFormulation& formulation = ImplicitFormulation());
 
   /// The ROI positions minimizing the energy for the given handle maps (precomputed responses).
-  Positions Solve(const std::vector<AffineMap>& handleMaps) const;
+  Positions Solve(
+    const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor) const;
 
   /// The same through the factor's triangular solves (the reference for Solve).
   Positions SolveDirect(const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const;

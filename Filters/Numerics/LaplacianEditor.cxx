@@ -241,7 +241,7 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
   }
   else if (rotation.Mode == RotationMode::Implicit)
   {
-    roiPositions = this->Implicit->Solve(handleMaps);
+    roiPositions = this->Implicit->Solve(handleMaps, this->Loop);
     if (rotation.PreserveDetailScale)
     {
       roiPositions = this->System.SolveWithDifferentialCoordinates(
