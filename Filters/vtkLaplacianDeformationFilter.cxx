@@ -772,6 +772,7 @@ void vtkLaplacianDeformationFilter::CommitEdit()
   PropertyTransform(this->HandleCenter, this->HandleRotation, this->HandleTranslation)
     ->TransformPoint(this->HandleCenter, center);
   auto committed = vtkSmartPointer<vtkPoints>::New();
+  committed->SetDataType(output->GetPoints()->GetDataType()); // DeepCopy keeps float otherwise
   committed->DeepCopy(output->GetPoints());
   this->Internals->Commits.push_back(committed);
   if (!this->GetHandleTransform(0))
