@@ -782,6 +782,7 @@ void vtkLaplacianDeformationFilter::CommitEdit()
   this->SetHandleTranslation(0.0, 0.0, 0.0);
   this->SetHandleRotation(0.0, 0.0, 0.0);
   this->Modified();
+  this->InvokeEvent(EditCommittedEvent);
 }
 
 bool vtkLaplacianDeformationFilter::UndoCommit()
@@ -792,6 +793,7 @@ bool vtkLaplacianDeformationFilter::UndoCommit()
   }
   this->Internals->Commits.pop_back();
   this->Modified();
+  this->InvokeEvent(CommitUndoneEvent);
   return true;
 }
 
@@ -807,6 +809,29 @@ bool vtkLaplacianDeformationFilter::GetRestPoint(vtkIdType id, double point[3])
     ? commits.back().Get()
     : input->GetPoints();
   rest->GetPoint(id, point);
+  return true;
+}
+
+bool vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group, double center[3])
+{
+  const vtkInternals& internals = *this->Internals;
+  const le::EditRegion& region = internals.Editor.GetRegion();
+  le::Vector3 sum = le::Vector3::Zero();
+  int count = 0;
+  for (std::size_t row = 0; row < region.HandleGroups.size(); ++row)
+  {
+    if (region.HandleGroups[row] == group)
+    {
+      sum += internals.Surface.GetMesh()->GetPositions()[region.Vertices[row]];
+      ++count;
+    }
+  }
+  if (count == 0)
+  {
+    return false;
+  }
+  const le::Vector3 mean = internals.Surface.Denormalize(sum / count);
+  std::copy(mean.data(), mean.data() + 3, center);
   return true;
 }
 

@@ -44,6 +44,7 @@
 #ifndef vtkLaplacianDeformationFilter_h
 #define vtkLaplacianDeformationFilter_h
 
+#include "vtkCommand.h"               // for vtkCommand::UserEvent
 #include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
@@ -424,14 +425,22 @@ public:
   /**
    * Make the current result the rest shape of the next edit, keeping the input connection:
    * the filter updates, keeps the output's points, sets HandleTranslation and HandleRotation to
-   * zero and moves HandleCenter with the handle. Handle transform objects are the caller's to
-   * reset (vtkDeformationHandleWidget does). A new input forgets all commits.
+   * zero and moves HandleCenter with the handle, then fires EditCommittedEvent. Handle
+   * transform objects are the caller's to reset: every vtkDeformationHandleWidget paired with
+   * the filter does, on that event. A new input forgets all commits.
    */
   void CommitEdit();
   /**
-   * Restore the rest shape before the last CommitEdit(); false if there is none.
+   * Restore the rest shape before the last CommitEdit() and fire CommitUndoneEvent; false if
+   * there is none.
    */
   bool UndoCommit();
+  /** Fired after the rest shape changed by CommitEdit() and UndoCommit(). */
+  enum CommitEvents
+  {
+    EditCommittedEvent = vtkCommand::UserEvent + 2005,
+    CommitUndoneEvent
+  };
   /** How many commits the current input has. */
   int GetNumberOfCommits();
 
@@ -440,6 +449,12 @@ public:
    * input's. Returns false for an id the input does not have.
    */
   bool GetRestPoint(vtkIdType id, double point[3]);
+
+  /**
+   * The rest centroid of handle group `group` in the region of the last update, the natural
+   * pivot of its handle widget; false if the last update had no such group.
+   */
+  bool GetHandleGroupCenter(int group, double center[3]);
 
   /**
    * Numeric factorizations completed since construction.

@@ -35,6 +35,8 @@ struct vtkDeformationHandleWidget::vtkInternals
   // The representation whose PlaceWidgetEvent reaches the filter, and the observer's tag.
   vtkWeakPointer<vtkWidgetRepresentation> ObservedRepresentation;
   unsigned long PlaceObserver = 0;
+  // The filter's commit and undo events.
+  unsigned long CommitObservers[2] = { 0, 0 };
   // A press outside the handle places the handle if it is released where it went down (within
   // 3 pixels). The interactor style, which orbits meanwhile, holds the interactor's focus, so
   // the moves and the release are watched by a passive observer, which sees them all the same.
@@ -151,15 +153,44 @@ void vtkDeformationHandleWidget::PairRepresentation()
     }
   }
   vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
-  if (this->DeformationFilter && rep)
+  vtkLaplacianDeformationFilter* filter = this->DeformationFilter;
+  if (!filter || !rep)
   {
-    rep->SetCenter(this->DeformationFilter->GetHandleCenter());
-    // The representation works in mesh units, the filter in its RadiusUnits.
-    const double scale = this->DeformationFilter->GetRadiusScale();
-    rep->SetHandleRadius(scale * this->DeformationFilter->GetHandleRadius());
-    rep->SetROIRadius(scale * this->DeformationFilter->GetROIRadius());
-    this->DeformationFilter->SetHandleTransform(rep->GetTransform());
+    return;
   }
+  double center[3];
+  if (this->HandleGroup == 0)
+  {
+    rep->SetCenter(filter->GetHandleCenter());
+    // The representation works in mesh units, the filter in its RadiusUnits.
+    const double scale = filter->GetRadiusScale();
+    rep->SetHandleRadius(scale * filter->GetHandleRadius());
+    rep->SetROIRadius(scale * filter->GetROIRadius());
+  }
+  else if (filter->GetHandleGroupCenter(this->HandleGroup, center))
+  {
+    rep->SetCenter(center);
+  }
+  filter->SetHandleTransform(this->HandleGroup, rep->GetTransform());
+}
+
+void vtkDeformationHandleWidget::SetHandleGroup(int group)
+{
+  group = std::max(group, 0);
+  if (this->HandleGroup == group)
+  {
+    return;
+  }
+  // The group left behind keeps its transform if another widget drives it.
+  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+  if (this->DeformationFilter && rep &&
+    this->DeformationFilter->GetHandleTransform(this->HandleGroup) == rep->GetTransform())
+  {
+    this->DeformationFilter->SetHandleTransform(this->HandleGroup, nullptr);
+  }
+  this->HandleGroup = group;
+  this->PairRepresentation();
+  this->Modified();
 }
 
 void vtkDeformationHandleWidget::SetSurfaceProp(vtkProp* prop)
@@ -194,14 +225,21 @@ void vtkDeformationHandleWidget::SetDeformationFilter(vtkLaplacianDeformationFil
   {
     return;
   }
+  unsigned long(&tags)[2] = this->Internals->CommitObservers;
   if (this->DeformationFilter)
   {
+    this->DeformationFilter->RemoveObserver(tags[0]);
+    this->DeformationFilter->RemoveObserver(tags[1]);
     this->DeformationFilter->UnRegister(this);
   }
   this->DeformationFilter = filter;
   if (filter)
   {
     filter->Register(this);
+    tags[0] = filter->AddObserver(vtkLaplacianDeformationFilter::EditCommittedEvent, this,
+      &vtkDeformationHandleWidget::RestAtCurrentCenter);
+    tags[1] = filter->AddObserver(vtkLaplacianDeformationFilter::CommitUndoneEvent, this,
+      &vtkDeformationHandleWidget::ResetHandle);
     this->CreateDefaultRepresentation();
     this->PairRepresentation();
   }
@@ -210,8 +248,9 @@ void vtkDeformationHandleWidget::SetDeformationFilter(vtkLaplacianDeformationFil
 
 void vtkDeformationHandleWidget::PushToFilter()
 {
+  // Only group 0 has a region of its own; the others come from labels.
   vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
-  if (this->DeformationFilter && rep)
+  if (this->DeformationFilter && rep && this->HandleGroup == 0)
   {
     this->DeformationFilter->SetHandleCenter(rep->GetCenter());
     const double scale = this->DeformationFilter->GetRadiusScale();
@@ -268,25 +307,25 @@ void vtkDeformationHandleWidget::ResetHandle()
 
 void vtkDeformationHandleWidget::CommitEdit()
 {
-  // The filter keeps the commits; its input connection stays as it is.
-  if (!this->DeformationFilter)
+  // The filter keeps the commits; its input connection stays as it is. Its event puts every
+  // paired handle at rest; a refused commit leaves the edit as it is.
+  if (this->DeformationFilter)
   {
-    return;
+    this->DeformationFilter->CommitEdit();
   }
-  double center[3];
-  this->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
-  this->DeformationFilter->CommitEdit();
-  this->PlaceHandle(center);
 }
 
 bool vtkDeformationHandleWidget::UndoCommit()
 {
-  if (!this->DeformationFilter || !this->DeformationFilter->UndoCommit())
-  {
-    return false;
-  }
-  this->ResetHandle();
-  return true;
+  return this->DeformationFilter && this->DeformationFilter->UndoCommit();
+}
+
+void vtkDeformationHandleWidget::RestAtCurrentCenter()
+{
+  double center[3];
+  this->CreateDefaultRepresentation();
+  this->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  this->PlaceHandle(center);
 }
 
 void vtkDeformationHandleWidget::SelectAction(vtkAbstractWidget* widget)
@@ -459,6 +498,7 @@ void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DeformationFilter: " << this->DeformationFilter << "\n";
+  os << indent << "HandleGroup: " << this->HandleGroup << "\n";
   os << indent << "SurfaceProp: " << this->SurfaceProp << "\n";
   os << indent << "Interacting: " << this->Interacting << "\n";
 }

@@ -44,6 +44,12 @@
  * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
  * InteractionEvent and EndInteractionEvent.
  *
+ * Several handle groups (labels 2, 3, ... of the filter's array selection) take one widget
+ * each, all paired with the same filter: SetHandleGroup(g) makes a widget drive group g's
+ * transform. A commit or undo through any of them, or through the filter, puts every paired
+ * handle at rest. Only group 0 has a handle and region of its own (HandleCenter and the radii),
+ * so the widgets of other groups do not move or resize the region: a click moves their pivot.
+ *
  * @sa vtkDeformationHandleRepresentation vtkLaplacianDeformationFilter
  */
 #ifndef vtkDeformationHandleWidget_h
@@ -78,6 +84,13 @@ public:
    */
   void SetDeformationFilter(vtkLaplacianDeformationFilter* filter);
   vtkGetObjectMacro(DeformationFilter, vtkLaplacianDeformationFilter);
+
+  /**
+   * The handle group whose transform the widget drives (default 0). A group other than 0
+   * starts at its rest centroid in the filter's last update.
+   */
+  void SetHandleGroup(int group);
+  vtkGetMacro(HandleGroup, int);
 
   /**
    * The prop showing the surface; a click on it places the handle. Without one (the default,
@@ -133,12 +146,16 @@ protected:
   void ClickAction(int x, int y);
   static void WatchClick(vtkObject* caller, unsigned long event, void* clientData, void*);
   void PushToFilter();
+  // After the filter's rest shape changed: the handle rests where the edit put it (commit), or
+  // where it was (undo).
+  void RestAtCurrentCenter();
   // The filter's handle and transform to the representation, and the representation's
   // PlaceWidgetEvent to the filter.
   void PairRepresentation();
 
   vtkLaplacianDeformationFilter* DeformationFilter = nullptr;
   vtkProp* SurfaceProp = nullptr;
+  int HandleGroup = 0;
   bool Interacting = false;
 
 private:

@@ -6,9 +6,11 @@
 // with a rebound modifier; a fifth orbits by dragging the surface and commits by clicking; a sixth
 // renders a translucent handle against a baseline; a seventh turns the handle about each axis of
 // its frame; an eighth moves it along one axis and resizes the region with the wheel; a ninth
-// checks the accessors ParaView drives against the filter's handle properties.
+// checks the accessors ParaView drives against the filter's handle properties; a tenth drags
+// two handle groups with a widget each, commits and undoes.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
+#include "FilterTestHelpers.h"
 
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkDeformationHandleWidget.h"
@@ -16,6 +18,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkEvent.h"
+#include "vtkIntArray.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkMatrix4x4.h"
@@ -100,9 +103,10 @@ struct Scene
   }
 
   // A widget paired with the filter, placing on the surface, switched on.
-  vtkSmartPointer<vtkDeformationHandleWidget> MakeWidget()
+  vtkSmartPointer<vtkDeformationHandleWidget> MakeWidget(int group = 0)
   {
     auto widget = vtkSmartPointer<vtkDeformationHandleWidget>::New();
+    widget->SetHandleGroup(group);
     widget->SetInteractor(this->Interactor);
     widget->SetDeformationFilter(this->Filter);
     widget->SetSurfaceProp(this->SurfaceActor());
@@ -125,16 +129,17 @@ struct Scene
     this->Recorder->Play();
   }
 
-  // The largest distance of the filter's handle vertices from where the representation's
-  // transform puts their rest positions.
-  double HandleError(vtkDeformationHandleRepresentation* rep)
+  // The largest distance of the filter's handle vertices (those where `array` is `value`) from
+  // where the representation's transform puts their rest positions.
+  double HandleError(vtkDeformationHandleRepresentation* rep, const char* array = "EditRole",
+    double value = vtkLaplacianDeformationFilter::ROLE_HANDLE)
   {
     vtkPolyData* output = this->Filter->GetOutput();
-    vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
+    vtkDataArray* roles = output->GetPointData()->GetArray(array);
     double worst = 0.0;
     for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
     {
-      if (roles->GetTuple1(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+      if (roles->GetTuple1(i) == value)
       {
         double expected[3];
         rep->GetTransform()->TransformPoint(this->Rest->GetPoint(i), expected);
@@ -686,6 +691,88 @@ int PropertyAccessors()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int TwoHandleGroups()
+{
+  // Labels: handle groups 0 and 1 (labels 2 and 3) on either side of an ROI disc, one widget
+  // each. Dragging one moves only its group; a commit through one widget rests both handles.
+  Scene scene;
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  const double centers[2][2] = { { 0.35, 0.5 }, { 0.65, 0.5 } };
+  for (vtkIdType i = 0; i < scene.Rest->GetNumberOfPoints(); ++i)
+  {
+    const double* p = scene.Rest->GetPoint(i);
+    int label = std::hypot(p[0] - 0.5, p[1] - 0.5) < 0.4 ? 1 : 0;
+    for (int g = 0; g < 2; ++g)
+    {
+      label = std::hypot(p[0] - centers[g][0], p[1] - centers[g][1]) < 0.06 ? 2 + g : label;
+    }
+    labels->InsertNextValue(label);
+  }
+  scene.Rest->GetPointData()->AddArray(labels);
+  scene.Filter->SetSelectionModeToArray();
+  scene.Filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Labels");
+  scene.Filter->SetHandleCenter(centers[0][0], centers[0][1], 0.0);
+  scene.Filter->SetROIRadius(0.1); // drawn only: the labels choose the region
+  scene.Filter->Update();
+  auto first = scene.MakeWidget(0);
+  auto second = scene.MakeWidget(1);
+  vtkDeformationHandleRepresentation* reps[2] = { first->GetDeformationHandleRepresentation(),
+    second->GetDeformationHandleRepresentation() };
+  double pivot[3];
+  reps[1]->GetCurrentCenter(pivot);
+  Check(std::hypot(pivot[0] - centers[1][0], pivot[1] - centers[1][1]) < 0.02,
+    "the second widget starts at its group's centroid");
+  const int factorizations = scene.Filter->GetNumberOfFactorizations();
+
+  // Drag the first handle up 50 pixels and the second down 50.
+  double moves[2][3];
+  for (int g = 0; g < 2; ++g)
+  {
+    double start[3], at[2];
+    reps[g]->GetCurrentCenter(start);
+    scene.Display(start, at);
+    const double dy = g == 0 ? 50.0 : -50.0;
+    scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + dy * t; }));
+    reps[g]->GetCurrentCenter(moves[g]);
+    vtkMath::Subtract(moves[g], start, moves[g]);
+  }
+  std::cout << "group moves: " << vtkMath::Norm(moves[0]) << ", " << vtkMath::Norm(moves[1]) << "\n";
+  Check(vtkMath::Norm(moves[0]) > 0.05 && vtkMath::Norm(moves[1]) > 0.05, "both handles moved");
+  Check(vtkMath::Dot(moves[0], moves[1]) < 0.0, "in opposite directions");
+  scene.Filter->Update();
+  for (int g = 0; g < 2; ++g)
+  {
+    const double error = scene.HandleError(reps[g], "Labels", 2 + g);
+    std::cout << "group " << g << " off its widget's transform by " << error << "\n";
+    Check(error < 2e-3, "each group follows its own widget");
+  }
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations, "dragging refactors nothing");
+
+  // Commit through the second widget: both handles rest, and the shape stays.
+  vtkNew<vtkPolyData> edited;
+  edited->DeepCopy(scene.Filter->GetOutput());
+  second->CommitEdit();
+  scene.Filter->Update();
+  for (int g = 0; g < 2; ++g)
+  {
+    Check(reps[g]->GetTransform()->GetMatrix()->IsIdentity(), "a commit rests every handle");
+  }
+  const double kept = MaxPointDistance(edited, scene.Filter->GetOutput());
+  std::cout << "after the commit, the surface moved by " << kept << "\n";
+  Check(kept < 1e-9, "a commit keeps the edited shape");
+
+  // Undo through the first: back to the input, both handles at rest.
+  reps[1]->SetTranslation(0.0, 0.0, 0.1);
+  Check(first->UndoCommit(), "the commit is undone");
+  scene.Filter->Update();
+  Check(reps[1]->GetTransform()->GetMatrix()->IsIdentity(), "an undo rests every handle");
+  const double restored = MaxPointDistance(scene.Rest, scene.Filter->GetOutput());
+  std::cout << "after the undo, off the input by " << restored << "\n";
+  Check(restored < 1e-9, "an undo restores the input");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -716,7 +803,7 @@ int main(int argc, char* argv[])
     { "TranslucentHandle", [&] { return TranslucentHandle(argc, argv); } },
     { "RotateAboutEachAxis", RotateAboutEachAxis },
     { "ConstrainedMoveAndWheel", ConstrainedMoveAndWheel },
-    { "PropertyAccessors", PropertyAccessors } };
+    { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups } };
   const auto found = cases.find(argc > 1 ? argv[1] : "");
   if (found != cases.end())
   {
