@@ -23,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSelection.h"
+#include "vtkSelectionNode.h"
 #include "vtkSignedCharArray.h"
 #include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
@@ -419,9 +420,8 @@ bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
 
 bool vtkLaplacianDeformationFilter::LabelSelectedPoints(vtkPolyData* input, vtkSelection* selection)
 {
-  // vtkExtractSelection, keeping the topology, marks what is selected in a vtkInsidedness
-  // array; its marks become the array mode's labels (2: handle group 0), made again only when
-  // the selection or the input changes.
+  // The selection's labels (SelectionLabels) are the array mode's (2: handle group 0), made
+  // again only when the selection or the input changes.
   vtkInternals& internals = *this->Internals;
   if (this->ROIRadius <= 0.0)
   {
@@ -433,37 +433,7 @@ bool vtkLaplacianDeformationFilter::LabelSelectedPoints(vtkPolyData* input, vtkS
   if (!internals.SelectedLabels || !std::equal(key, key + 2, internals.SelectedKey))
   {
     std::copy(key, key + 2, internals.SelectedKey);
-    vtkNew<vtkExtractSelection> extract;
-    extract->PreserveTopologyOn();
-    extract->SetInputData(0, input);
-    extract->SetInputData(1, selection);
-    extract->Update();
-    auto* marked = vtkDataSet::SafeDownCast(extract->GetOutputDataObject(0));
-    vtkDataArray* points = marked ? marked->GetPointData()->GetArray("vtkInsidedness") : nullptr;
-    vtkDataArray* cells = marked ? marked->GetCellData()->GetArray("vtkInsidedness") : nullptr;
-    internals.SelectedLabels = vtkSmartPointer<vtkIntArray>::New();
-    internals.SelectedLabels->SetName("SelectedHandle");
-    internals.SelectedLabels->SetNumberOfValues(input->GetNumberOfPoints());
-    internals.SelectedLabels->FillValue(0);
-    for (vtkIdType i = 0; points && i < points->GetNumberOfTuples(); ++i)
-    {
-      if (points->GetComponent(i, 0) > 0.0)
-      {
-        internals.SelectedLabels->SetValue(i, 2);
-      }
-    }
-    vtkNew<vtkIdList> cellPoints;
-    for (vtkIdType c = 0; cells && c < cells->GetNumberOfTuples(); ++c)
-    {
-      if (cells->GetComponent(c, 0) > 0.0)
-      {
-        input->GetCellPoints(c, cellPoints);
-        for (vtkIdType k = 0; k < cellPoints->GetNumberOfIds(); ++k)
-        {
-          internals.SelectedLabels->SetValue(cellPoints->GetId(k), 2);
-        }
-      }
-    }
+    internals.SelectedLabels = this->SelectionLabels(input, selection);
   }
   const int* labels = internals.SelectedLabels->GetPointer(0);
   if (std::find(labels, labels + input->GetNumberOfPoints(), 2) == labels + input->GetNumberOfPoints())
@@ -472,6 +442,66 @@ bool vtkLaplacianDeformationFilter::LabelSelectedPoints(vtkPolyData* input, vtkS
   }
   internals.Selection = internals.SelectedLabels;
   return true;
+}
+
+vtkSmartPointer<vtkIntArray> vtkLaplacianDeformationFilter::LabelSelection(
+  vtkPolyData* input, vtkSelection* selection, int piece)
+{
+  // vtkExtractSelection, keeping the topology, marks what is selected in vtkInsidedness arrays.
+  vtkNew<vtkSelection> own;
+  for (unsigned int n = 0; n < selection->GetNumberOfNodes(); ++n)
+  {
+    vtkSelectionNode* node = selection->GetNode(n);
+    vtkInformation* properties = node->GetProperties();
+    const int process =
+      properties->Has(vtkSelectionNode::PROCESS_ID()) ? properties->Get(vtkSelectionNode::PROCESS_ID()) : -1;
+    if (process == -1 || process == piece)
+    {
+      own->AddNode(node);
+    }
+  }
+  auto labels = vtkSmartPointer<vtkIntArray>::New();
+  labels->SetName("SelectedHandle");
+  labels->SetNumberOfValues(input->GetNumberOfPoints());
+  labels->FillValue(0);
+  if (own->GetNumberOfNodes() == 0)
+  {
+    return labels;
+  }
+  vtkNew<vtkExtractSelection> extract;
+  extract->PreserveTopologyOn();
+  extract->SetInputData(0, input);
+  extract->SetInputData(1, own);
+  extract->Update();
+  auto* marked = vtkDataSet::SafeDownCast(extract->GetOutputDataObject(0));
+  vtkDataArray* points = marked ? marked->GetPointData()->GetArray("vtkInsidedness") : nullptr;
+  vtkDataArray* cells = marked ? marked->GetCellData()->GetArray("vtkInsidedness") : nullptr;
+  for (vtkIdType i = 0; points && i < points->GetNumberOfTuples(); ++i)
+  {
+    if (points->GetComponent(i, 0) > 0.0)
+    {
+      labels->SetValue(i, 2);
+    }
+  }
+  vtkNew<vtkIdList> cellPoints;
+  for (vtkIdType c = 0; cells && c < cells->GetNumberOfTuples(); ++c)
+  {
+    if (cells->GetComponent(c, 0) > 0.0)
+    {
+      input->GetCellPoints(c, cellPoints);
+      for (vtkIdType k = 0; k < cellPoints->GetNumberOfIds(); ++k)
+      {
+        labels->SetValue(cellPoints->GetId(k), 2);
+      }
+    }
+  }
+  return labels;
+}
+
+vtkSmartPointer<vtkIntArray> vtkLaplacianDeformationFilter::SelectionLabels(
+  vtkPolyData* input, vtkSelection* selection)
+{
+  return LabelSelection(input, selection, 0);
 }
 
 double vtkLaplacianDeformationFilter::SelectionGrowth() const

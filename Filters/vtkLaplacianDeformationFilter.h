@@ -47,6 +47,7 @@
 #include "vtkCommand.h"               // for vtkCommand::UserEvent
 #include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -55,6 +56,7 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
 class vtkPoints;
+class vtkIntArray;
 class vtkSelection;
 
 class VTKLAPLACIANEDITING_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
@@ -526,6 +528,20 @@ protected:
    * error, and the output is the input.
    */
   void EditSurface(vtkPolyData* input, vtkPolyData* output);
+
+  /**
+   * The handle labels of `input` for `selection`: 2 on the selected points and on the points of
+   * selected cells, 0 elsewhere. Nodes whose PROCESS_ID names another piece than `piece` are
+   * skipped, as ParaView's selections of ids address each piece.
+   */
+  static vtkSmartPointer<vtkIntArray> LabelSelection(
+    vtkPolyData* input, vtkSelection* selection, int piece);
+
+  /**
+   * The labels of the selection on port 1 for the surface being edited: LabelSelection for
+   * piece 0 here; the parallel filter's gathered surface carries those of its pieces.
+   */
+  virtual vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection);
 
   /**
    * Adds the EditRole array to the output when GenerateEditRoles is on, as the active scalars

@@ -3,14 +3,15 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkErrorCode.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSelection.h"
 #include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkSignedCharArray.h"
 
@@ -20,6 +21,8 @@ vtkCxxSetObjectMacro(vtkPLaplacianDeformationFilter, Controller, vtkMultiProcess
 namespace
 {
 const int PointsTag = 40501;
+// The point array that carries each piece's selection labels to the first rank.
+const char* const GatheredLabels = "vtkLaplacianSelectionLabels";
 }
 
 vtkPLaplacianDeformationFilter::vtkPLaplacianDeformationFilter()
@@ -41,18 +44,10 @@ int vtkPLaplacianDeformationFilter::RequestData(
   }
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (this->GetNumberOfInputConnections(1) > 0)
-  {
-    // Every rank has the same connections, so every rank takes this path.
-    vtkErrorMacro(<< "A selection on input port 1 is not supported on more than one process yet "
-                  << "(its ids refer to each piece): label the handle in a point array and use "
-                  << "SetSelectionModeToArray().");
-    this->SetErrorCode(vtkErrorCode::UserError);
-    output->ShallowCopy(input);
-    return 1;
-  }
+  vtkSelection* selection =
+    this->GetNumberOfInputConnections(1) > 0 ? vtkSelection::GetData(inputVector[1]) : nullptr;
   vtkNew<vtkPolyData> edited;
-  if (this->GatherPieces(input))
+  if (this->GatherPieces(input, selection))
   {
     this->EditSurface(this->Gathered, edited);
   }
@@ -60,21 +55,29 @@ int vtkPLaplacianDeformationFilter::RequestData(
   return 1;
 }
 
-bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input)
+bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelection* selection)
 {
-  // Geometry travels only when some piece changed.
+  // Geometry travels only when some piece or selection changed.
   vtkMultiProcessController* controller = this->Controller;
   const int ranks = controller->GetNumberOfProcesses();
-  const bool first = controller->GetLocalProcessId() == 0;
-  const double localTime = static_cast<double>(vtkLaplacianSurfaceAdapter::GetContentTime(input));
-  std::vector<double> times(ranks, 0.0);
-  controller->Gather(&localTime, times.data(), 1, 0);
+  const int rank = controller->GetLocalProcessId();
+  const bool first = rank == 0;
+  const double localTimes[2] = { static_cast<double>(vtkLaplacianSurfaceAdapter::GetContentTime(input)),
+    selection ? static_cast<double>(selection->GetMTime()) : 0.0 };
+  std::vector<double> times(2 * ranks, 0.0);
+  controller->Gather(localTimes, times.data(), 2, 0);
   double changed = first && (times != this->PieceTimes || !this->Gathered) ? 1.0 : 0.0;
   controller->Broadcast(&changed, 1, 0);
   if (changed != 0.0)
   {
     vtkNew<vtkPolyData> local;
     local->ShallowCopy(input);
+    if (selection)
+    {
+      vtkSmartPointer<vtkIntArray> labels = LabelSelection(input, selection, rank);
+      labels->SetName(GatheredLabels);
+      local->GetPointData()->AddArray(labels);
+    }
     std::vector<vtkSmartPointer<vtkDataObject>> pieces;
     controller->Gather(local, pieces, 0);
     if (first)
@@ -100,6 +103,19 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input)
     }
   }
   return first;
+}
+
+vtkSmartPointer<vtkIntArray> vtkPLaplacianDeformationFilter::SelectionLabels(
+  vtkPolyData* input, vtkSelection* selection)
+{
+  vtkIntArray* gathered = input == this->Gathered
+    ? vtkIntArray::SafeDownCast(input->GetPointData()->GetArray(GatheredLabels))
+    : nullptr;
+  if (gathered)
+  {
+    return gathered;
+  }
+  return this->Superclass::SelectionLabels(input, selection);
 }
 
 void vtkPLaplacianDeformationFilter::ScatterPoints(

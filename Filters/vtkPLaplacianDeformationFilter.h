@@ -7,8 +7,10 @@
  * sends each rank its own points back, in its own order. The first rank caches the gathered
  * surface on the pieces' MTimes, so a handle move sends no geometry back up. Point and polygon
  * normals come back refreshed near the edit, as the serial filter leaves them (polygon normals
- * when the pieces hold only polygons; otherwise they are dropped rather than left stale). With
- * one process, or no controller, it is the serial filter.
+ * when the pieces hold only polygons; otherwise they are dropped rather than left stale). A
+ * selection on port 1 is labelled on each rank, on its own piece (ParaView's selections of ids
+ * address pieces), and the labels travel with the pieces. With one process, or no controller,
+ * it is the serial filter.
  *
  * @sa vtkLaplacianDeformationFilter vtkMultiProcessController
  */
@@ -44,6 +46,8 @@ protected:
   ~vtkPLaplacianDeformationFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // On the gathered surface, the labels each rank made on its piece.
+  vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection) override;
 
   vtkMultiProcessController* Controller = nullptr;
 
@@ -51,9 +55,9 @@ private:
   vtkPLaplacianDeformationFilter(const vtkPLaplacianDeformationFilter&) = delete;
   void operator=(const vtkPLaplacianDeformationFilter&) = delete;
 
-  // Rank 0: the gathered surface, each piece's MTime, point and cell counts, and whether the
-  // pieces hold polygons only.
-  bool GatherPieces(vtkPolyData* input);
+  // Rank 0: the gathered surface, each piece's content time and selection MTime, point and
+  // cell counts, and whether the pieces hold polygons only.
+  bool GatherPieces(vtkPolyData* input, vtkSelection* selection);
   void ScatterPoints(vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output);
   vtkSmartPointer<vtkPolyData> Gathered;
   std::vector<double> PieceTimes;

@@ -1,6 +1,7 @@
 """pvbatch, serial or under mpiexec, or pvpython connected to a pvserver: edit a real mesh split
 into pieces across the ranks and write every output point, its normal and its EditRole to a
-file.
+file. With LAPLACIAN_PARALLEL_SELECTION=1 the handle is a ParaView selection (a threshold on
+the x coordinate, the same points on every rank) instead of HandleCenter and HandleRadius.
 
     [mpiexec -np 2] pvbatch TestParallel.py PLUGIN POINTS.txt MESH
     pvpython TestParallel.py PLUGIN POINTS.txt MESH SERVER_PORT
@@ -30,6 +31,11 @@ size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
 deform = simple.LaplacianDeformation(Input=mesh)
 deform.HandleCenter = [bounds[1], 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])]
 deform.HandleRadius = 0.05 * size
+if os.environ.get("LAPLACIAN_PARALLEL_SELECTION") == "1":
+    # Each rank labels the selection on its own piece; the labels travel with the pieces.
+    deform.Input = simple.Calculator(Input=mesh, ResultArrayName="X", Function="coordsX")
+    deform.Selection = simple.ThresholdSelectionSource(
+        FieldType="POINT", ArrayName="X", Thresholds=[bounds[1] - 0.05 * size, bounds[1]])
 deform.ROIRadius = 0.45 * size
 deform.HandleTranslation = [0.1 * size, 0.05 * size, 0.0]
 deform.RotationMode = "Explicit"
@@ -43,6 +49,16 @@ normals = edited.GetPointData().GetNormals()
 roles = edited.GetPointData().GetArray("EditRole")
 if normals is None or roles is None:
     sys.exit("FAILED: the output has no point normals or no EditRole")
+if os.environ.get("LAPLACIAN_PARALLEL_SELECTION") == "1":
+    # The handle is exactly the selection: the rest x of every output point is in the input.
+    rest = servermanager.Fetch(mesh)
+    selected = sorted(rest.GetPoint(i) for i in range(rest.GetNumberOfPoints())
+                      if rest.GetPoint(i)[0] >= bounds[1] - 0.05 * size)
+    handles = sorted(rest.GetPoint(i) for i in range(edited.GetNumberOfPoints())
+                     if roles.GetTuple1(i) == 3)  # ROLE_HANDLE
+    if not selected or selected != handles:
+        sys.exit(f"FAILED: {len(handles)} handle points for {len(selected)} selected ones")
+    print(f"the handle is the {len(selected)} selected points", flush=True)
 with open(sys.argv[2], "w") as points:
     for i in range(edited.GetNumberOfPoints()):
         values = edited.GetPoint(i) + normals.GetTuple3(i) + (roles.GetTuple1(i),)

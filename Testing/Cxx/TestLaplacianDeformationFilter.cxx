@@ -7,6 +7,7 @@
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkOBJReader.h"
@@ -777,6 +778,23 @@ TEST(Filter, AHandleFromASelectionInputEditsAsTheSameArraySelection)
   selected->Update();
   EXPECT_EQ(selected->GetNumberOfHandleVertices(), static_cast<int>(ids.size()));
   EXPECT_GT(selected->GetNumberOfFactorizations(), factorizations) << "a new selection selects again";
+}
+
+TEST(Filter, ASelectionAddressedToAnotherPieceSelectsNothingHere)
+{
+  // ParaView's selections of ids name the piece (PROCESS_ID) they address; a serial filter is
+  // piece 0, and the parallel one labels each piece with the nodes addressed to it.
+  auto input = BumpyPlane(20);
+  auto filter = PlaneEdit(input);
+  const vtkIdType cell = input->GetNumberOfCells() / 2;
+  auto selection = IdSelection({ cell }, vtkSelectionNode::CELL);
+  auto other = IdSelection({ 0, 1, 2 }, vtkSelectionNode::POINT);
+  selection->GetNode(0)->GetProperties()->Set(vtkSelectionNode::PROCESS_ID(), 0);
+  other->GetNode(0)->GetProperties()->Set(vtkSelectionNode::PROCESS_ID(), 1);
+  selection->AddNode(other->GetNode(0));
+  filter->SetSelectionData(selection);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfHandleVertices(), 3) << "the cell's corners, not points 0-2";
 }
 
 TEST(Filter, ASelectionOfCellsMakesTheirPointsTheHandle)
