@@ -322,14 +322,16 @@ void vtkLaplacianDeformationFilter::ResetStatistics()
 
 double vtkLaplacianDeformationFilter::AbsoluteRadius(double radius) const
 {
-  return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION ? radius * this->Internals->Diagonal
-                                                       : radius;
+  const double diagonal = this->WholeDiagonal > 0.0 ? this->WholeDiagonal : this->Internals->Diagonal;
+  return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION ? radius * diagonal : radius;
 }
 
 double vtkLaplacianDeformationFilter::GetRadiusScale()
 {
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
-  const double diagonal = input && input->GetNumberOfPoints() > 0 ? input->GetLength() : 0.0;
+  const double diagonal = this->WholeDiagonal > 0.0 ? this->WholeDiagonal
+    : input && input->GetNumberOfPoints() > 0    ? input->GetLength()
+                                                 : 0.0;
   return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION && diagonal > 0.0 ? diagonal : 1.0;
 }
 
@@ -587,12 +589,16 @@ void vtkLaplacianDeformationFilter::ComputeReach(vtkPolyData* rest)
     reach.Margin = -1.0; // nothing labelled, or no polygon: the core reports it on the whole input
     return;
   }
-  const double growth = this->SelectionGrowth();
-  const double roi = selection ? internals.ReachExtent : this->AbsoluteRadius(this->ROIRadius);
+  reach.Margin = this->ReachMargin(selection != nullptr, internals.ReachExtent, this->SelectionGrowth());
+}
+
+double vtkLaplacianDeformationFilter::ReachMargin(bool labelled, double extent, double growth) const
+{
+  const double roi = labelled ? extent : this->AbsoluteRadius(this->ROIRadius);
   const double smoothing = this->NormalSmoothingRadius > 0.0
     ? this->AbsoluteRadius(this->NormalSmoothingRadius)
-    : 0.2 * (selection ? 2.0 * roi + growth : roi);
-  reach.Margin = 1.1 * ((selection ? growth : 2.0 * internals.ReachExtent + roi) + smoothing);
+    : 0.2 * (labelled ? 2.0 * roi + growth : roi);
+  return 1.1 * ((labelled ? growth : 2.0 * extent + roi) + smoothing);
 }
 
 bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
@@ -600,7 +606,7 @@ bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
   // The surface graph depends on the rest surface and on the part of it the edit can reach.
   vtkInternals& internals = *this->Internals;
   const vtkMTimeType time = vtkLaplacianSurfaceAdapter::GetContentTime(rest);
-  internals.Diagonal = rest->GetLength();
+  internals.Diagonal = this->WholeDiagonal > 0.0 ? this->WholeDiagonal : rest->GetLength();
   this->ComputeReach(rest);
   const vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
   if (time == internals.SurfaceTime && this->MergeCoincidentPoints == internals.SurfaceMerge &&

@@ -544,6 +544,24 @@ protected:
   virtual vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection);
 
   /**
+   * How far from its seeds (the handle centre, or the labelled points) the edit can reach, in
+   * mesh units: `extent` is the distance from the handle centre to the nearest polygon corner
+   * or, for labels, half the labelled points' extent; `growth` how far a selection's ROI grows.
+   */
+  double ReachMargin(bool labelled, double extent, double growth) const;
+
+  /**
+   * A radius property in mesh units, after RadiusUnits.
+   */
+  double AbsoluteRadius(double radius) const;
+
+  /**
+   * The whole surface's bounding-box diagonal when the filter edits a part of it (the parallel
+   * filter's gathered part); 0: the edited surface's own.
+   */
+  double WholeDiagonal = 0.0;
+
+  /**
    * Adds the EditRole array to the output when GenerateEditRoles is on, as the active scalars
    * where the output has none, with the Fig. 2 colours when RoleColors is on.
    */
@@ -610,8 +628,6 @@ private:
   void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
   bool Fail(const std::string& message);
   void ResetStatistics();
-  // A radius property in mesh units, after RadiusUnits.
-  double AbsoluteRadius(double radius) const;
   // Warnings about a region that is unlikely what the user meant.
   void WarnAboutRegion(int centerVertex);
   vtkPolyData* RestSurface(vtkPolyData* input);

@@ -6,9 +6,11 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkLinearTransform.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -147,6 +149,69 @@ private:
   double Box[6];
   std::unordered_map<std::uint64_t, std::vector<const std::array<double, 3>*>> Cells;
 };
+}
+
+vtkSmartPointer<vtkPolyData> vtkLaplacianSurfaceAdapter::ExtractReach(
+  vtkPolyData* input, const Reach& reach)
+{
+  const ReachTest inReach(reach);
+  std::vector<char> reached(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    reached[i] = inReach(input->GetPoint(i));
+  }
+  std::vector<vtkIdType> pointOfInput(input->GetNumberOfPoints(), -1);
+  vtkNew<vtkIdTypeArray> originalPoints, originalCells;
+  originalPoints->SetName("vtkOriginalPointIds");
+  originalCells->SetName("vtkOriginalCellIds");
+  vtkNew<vtkCellArray> polygons;
+  // The polygons are the input's cells after its vertices and lines.
+  const vtkIdType firstPolygon = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  vtkIdType polygon = 0;
+  std::vector<vtkIdType> corners;
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++polygon)
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    if (std::none_of(ids, ids + size, [&](vtkIdType id) { return reached[id] != 0; }))
+    {
+      continue;
+    }
+    corners.clear();
+    for (vtkIdType c = 0; c < size; ++c)
+    {
+      if (pointOfInput[ids[c]] < 0)
+      {
+        pointOfInput[ids[c]] = originalPoints->GetNumberOfTuples();
+        originalPoints->InsertNextValue(ids[c]);
+      }
+      corners.push_back(pointOfInput[ids[c]]);
+    }
+    polygons->InsertNextCell(size, corners.data());
+    originalCells->InsertNextValue(firstPolygon + polygon);
+  }
+  auto part = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(originalPoints->GetNumberOfTuples());
+  part->GetPointData()->CopyAllocate(input->GetPointData(), originalPoints->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < originalPoints->GetNumberOfTuples(); ++i)
+  {
+    points->SetPoint(i, input->GetPoint(originalPoints->GetValue(i)));
+    part->GetPointData()->CopyData(input->GetPointData(), originalPoints->GetValue(i), i);
+  }
+  part->SetPoints(points);
+  part->SetPolys(polygons);
+  part->GetCellData()->CopyAllocate(input->GetCellData(), originalCells->GetNumberOfTuples());
+  for (vtkIdType c = 0; c < originalCells->GetNumberOfTuples(); ++c)
+  {
+    part->GetCellData()->CopyData(input->GetCellData(), originalCells->GetValue(c), c);
+  }
+  part->GetPointData()->AddArray(originalPoints);
+  part->GetCellData()->AddArray(originalCells);
+  return part;
 }
 
 std::string vtkLaplacianSurfaceAdapter::Build(

@@ -49,6 +49,11 @@ public:
   /// `reach` and the ring of polygons around them. Returns an error message, empty on success.
   std::string Build(vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach);
 
+  /// The polygons of `input` with a corner in `reach`, with their point and cell data and the
+  /// input ids of their points and cells (vtkOriginalPointIds, vtkOriginalCellIds): the part of
+  /// a piece that a parallel edit sends to the rank that solves.
+  static vtkSmartPointer<vtkPolyData> ExtractReach(vtkPolyData* input, const Reach& reach);
+
   /// The polygon corner of `input` nearest `point`, -1 if there is none (one pass).
   static vtkIdType FindNearestCorner(vtkPolyData* input, const double point[3]);
 

@@ -2,12 +2,16 @@
  * @class   vtkPLaplacianDeformationFilter
  * @brief   vtkLaplacianDeformationFilter on a surface distributed over MPI ranks
  *
- * The edit is global (one sparse system over the region), so the pieces go to the first rank,
- * which edits the whole surface (coincident piece-boundary points merge into one vertex) and
- * sends each rank its own points back, in its own order. The first rank caches the gathered
- * surface on the pieces' MTimes, so a handle move sends no geometry back up. Point and polygon
- * normals come back refreshed near the edit, as the serial filter leaves them (polygon normals
- * when the pieces hold only polygons; otherwise they are dropped rather than left stale). A
+ * The edit is global (one sparse system over the region), so it is solved on the first rank.
+ * The ranks agree on the part of the surface the edit can reach (the serial filter's reach: a
+ * ball around the handle centre, or around the labelled points, from a few reductions and the
+ * labelled points), widened by two of the longest edges so that the ring around the region
+ * comes along whole; each rank sends only its polygons in that part, which the first rank edits
+ * (coincident piece-boundary points merge into one vertex), and each rank gets back only its
+ * points there. The first rank's memory and the traffic of a move follow the part, not the
+ * surface. The first rank caches the gathered part on the pieces' content, the selection and
+ * the reach, so a handle move sends no geometry up. Point and polygon normals come back
+ * refreshed near the edit, as the serial filter leaves them. A
  * selection on port 1 is labelled on each rank, on its own piece (ParaView's selections of ids
  * address pieces), and the labels travel with the pieces. With one process, or no controller,
  * it is the serial filter.
@@ -21,9 +25,14 @@
 #include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkSmartPointer.h"           // for vtkSmartPointer
 
+#include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
 
+class vtkDataArray;
+class vtkDataSetAttributes;
+class vtkIntArray;
 class vtkMultiProcessController;
+class vtkSelection;
 
 class VTKLAPLACIANEDITING_EXPORT vtkPLaplacianDeformationFilter
   : public vtkLaplacianDeformationFilter
@@ -41,6 +50,12 @@ public:
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
   ///@}
 
+  /**
+   * On the first rank, how many points it gathered for the last edit: the parts of the pieces
+   * the edit can reach (its memory follows them, not the whole surface); 0 elsewhere.
+   */
+  vtkGetMacro(NumberOfGatheredPoints, vtkIdType);
+
 protected:
   vtkPLaplacianDeformationFilter();
   ~vtkPLaplacianDeformationFilter() override;
@@ -50,20 +65,37 @@ protected:
   vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection) override;
 
   vtkMultiProcessController* Controller = nullptr;
+  vtkIdType NumberOfGatheredPoints = 0;
 
 private:
   vtkPLaplacianDeformationFilter(const vtkPLaplacianDeformationFilter&) = delete;
   void operator=(const vtkPLaplacianDeformationFilter&) = delete;
 
-  // Rank 0: the gathered surface, each piece's content time and selection MTime, point and
-  // cell counts, and whether the pieces hold polygons only.
+  // This piece's labels: a selection's (cached on the selection and the piece), or the array
+  // mode's array; nullptr in geodesic mode.
+  vtkDataArray* LocalLabels(vtkPolyData* input, vtkSelection* selection);
+  // The reach of the edit over the whole surface, the same on every rank (collective), into
+  // the internals; sets WholeDiagonal.
+  void UpdateGlobalReach(vtkPolyData* input, vtkDataArray* labels, bool fromSelection);
+  double LongestPolygonEdge(vtkPolyData* input);
+  // Rank 0: the parts in reach of all pieces, appended; true on rank 0.
   bool GatherPieces(vtkPolyData* input, vtkSelection* selection);
   void ScatterPoints(vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output);
+  static vtkSmartPointer<vtkDataArray> WritableNormals(vtkDataSetAttributes* attributes, bool refreshed);
+
+  vtkSmartPointer<vtkIntArray> PieceLabels;
+  vtkMTimeType PieceLabelsKey[2] = { 0, 0 };
+  vtkMTimeType LongestEdgeTime = 0;
+  double LongestEdge = 0.0;
+  // The current reach and, on rank 0, the one the parts were gathered for.
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+  // Rank 0: the gathered parts, what they were gathered for (each piece's content time and
+  // selection MTime), and each piece's point and polygon counts in them.
   vtkSmartPointer<vtkPolyData> Gathered;
   std::vector<double> PieceTimes;
   std::vector<vtkIdType> PieceSizes;
   std::vector<vtkIdType> PieceCellSizes;
-  bool OnlyPolygons = true;
 };
 
 #endif

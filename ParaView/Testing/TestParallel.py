@@ -37,31 +37,48 @@ if os.environ.get("LAPLACIAN_PARALLEL_SELECTION") == "1":
     deform.Selection = simple.ThresholdSelectionSource(
         FieldType="POINT", ArrayName="X", Thresholds=[bounds[1] - 0.05 * size, bounds[1]])
 deform.ROIRadius = 0.45 * size
-deform.HandleTranslation = [0.1 * size, 0.05 * size, 0.0]
-deform.RotationMode = "Explicit"
-deform.UpdatePipeline()
-# Move the handle once more: the second update must reuse the gathered surface and factor.
-deform.HandleTranslation = [0.15 * size, 0.05 * size, 0.02 * size]
-deform.UpdatePipeline()
-edited = servermanager.Fetch(deform)  # all pieces, appended on the first rank
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
-normals = edited.GetPointData().GetNormals()
-roles = edited.GetPointData().GetArray("EditRole")
-if normals is None or roles is None:
-    sys.exit("FAILED: the output has no point normals or no EditRole")
-if os.environ.get("LAPLACIAN_PARALLEL_SELECTION") == "1":
-    # The handle is exactly the selection: the rest x of every output point is in the input.
-    rest = servermanager.Fetch(mesh)
-    selected = sorted(rest.GetPoint(i) for i in range(rest.GetNumberOfPoints())
-                      if rest.GetPoint(i)[0] >= bounds[1] - 0.05 * size)
-    handles = sorted(rest.GetPoint(i) for i in range(edited.GetNumberOfPoints())
-                     if roles.GetTuple1(i) == 3)  # ROLE_HANDLE
-    if not selected or selected != handles:
-        sys.exit(f"FAILED: {len(handles)} handle points for {len(selected)} selected ones")
-    print(f"the handle is the {len(selected)} selected points", flush=True)
-with open(sys.argv[2], "w") as points:
-    for i in range(edited.GetNumberOfPoints()):
-        values = edited.GetPoint(i) + normals.GetTuple3(i) + (roles.GetTuple1(i),)
-        points.write("%.17g %.17g %.17g %.9g %.9g %.9g %d\n" % values)
-print(f"{edited.GetNumberOfPoints()} points from {ranks} rank(s)", flush=True)
+rest = servermanager.Fetch(mesh)
 
+
+def check_and_write(edited, path):
+    """Writes every output point, its normal and its EditRole; checks the selection's handle."""
+    normals = edited.GetPointData().GetNormals()
+    roles = edited.GetPointData().GetArray("EditRole")
+    if normals is None or roles is None:
+        sys.exit("FAILED: the output has no point normals or no EditRole")
+    if os.environ.get("LAPLACIAN_PARALLEL_SELECTION") == "1":
+        # The handle is exactly the selection: the rest x of every output point is in the input.
+        selected = sorted(rest.GetPoint(i) for i in range(rest.GetNumberOfPoints())
+                          if rest.GetPoint(i)[0] >= bounds[1] - 0.05 * size)
+        handles = sorted(rest.GetPoint(i) for i in range(edited.GetNumberOfPoints())
+                         if roles.GetTuple1(i) == 3)  # ROLE_HANDLE
+        if not selected or selected != handles:
+            sys.exit(f"FAILED: {len(handles)} handle points for {len(selected)} selected ones")
+    with open(path, "w") as points:
+        for i in range(edited.GetNumberOfPoints()):
+            values = edited.GetPoint(i) + normals.GetTuple3(i) + (roles.GetTuple1(i),)
+            points.write("%.17g %.17g %.17g %.9g %.9g %.9g %d\n" % values)
+
+
+# Every rotation mode, each with two handle moves: the second must reuse the gathered part and
+# the factor.
+base, extension = os.path.splitext(sys.argv[2])
+modes = {"None": "none", "Explicit": "explicit", "Implicit": "implicit",
+         "As rigid as possible": "arap"}
+for mode, short in modes.items():
+    deform.RotationMode = mode
+    deform.HandleTranslation = [0.1 * size, 0.05 * size, 0.0]
+    deform.UpdatePipeline()
+    deform.UpdatePropertyInformation()
+    factorizations = deform.GetProperty("NumberOfFactorizations").GetData()
+    deform.HandleTranslation = [0.15 * size, 0.05 * size, 0.02 * size]
+    deform.UpdatePipeline()
+    deform.UpdatePropertyInformation()
+    if deform.GetProperty("NumberOfFactorizations").GetData() != factorizations:
+        sys.exit(f"FAILED: {mode}: the second handle move refactored")
+    edited = servermanager.Fetch(deform)  # all pieces, appended on the first rank
+    check_and_write(edited, f"{base}-{short}{extension}")
+    gathered = deform.GetProperty("NumberOfGatheredPoints").GetData()
+    print(f"{mode}: {edited.GetNumberOfPoints()} points from {ranks} rank(s), "
+          f"{gathered} gathered for the edit", flush=True)

@@ -1,0 +1,51 @@
+"""Memory of an edit under MPI, per rank, against the size of the surface.
+
+    mpiexec -np 2 pvbatch --symmetric ParallelRegionMemory.py PLUGIN [THETA PHI]
+
+Each rank generates its piece of a sphere (default 2000 x 1002: 2M points, 4M triangles), the
+filter edits a region of about 7k vertices around (0.5, 0, 0), and every rank prints its growth
+at setup and after ten handle moves; the first rank, which solves, also the points it gathered.
+"""
+import sys
+
+from paraview.simple import LoadPlugin, Sphere
+
+LoadPlugin(sys.argv[1], remote=False)
+import paraview.simple as simple  # noqa: E402
+from vtkmodules.vtkParallelCore import vtkMultiProcessController  # noqa: E402
+
+
+def rss_mb():
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024.0
+
+
+theta, phi = (int(a) for a in sys.argv[2:4]) if len(sys.argv) > 3 else (2000, 1002)
+sphere = Sphere(ThetaResolution=theta, PhiResolution=phi, Radius=0.5)
+sphere.UpdatePipeline()
+piece = sphere.GetClientSideObject().GetOutputDataObject(0)
+base = rss_mb()
+deform = simple.LaplacianDeformation(Input=sphere)
+deform.HandleCenter = [0.5, 0.0, 0.0]
+diagonal = 3 ** 0.5  # as RegionMemory.py's radii, fractions of the diagonal
+deform.HandleRadius = 0.01 * diagonal
+deform.ROIRadius = 0.034 * diagonal
+deform.UpdatePipeline()
+setup = rss_mb() - base
+for k in range(1, 11):
+    deform.HandleTranslation = [0.002 * k, 0.0, 0.0]
+    deform.UpdatePipeline()
+moves = rss_mb() - base
+deform.UpdatePropertyInformation()  # the first rank's figures
+rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
+figures = {name: deform.GetProperty(name).GetData() if deform.GetProperty(name) else "-"
+           for name in ("NumberOfGatheredPoints", "NumberOfROIVertices", "NumberOfFactorizations")}
+moved = deform.GetClientSideObject().GetOutputDataObject(0).GetPoints()
+before = piece.GetPoints()
+figures["moved here"] = sum(1 for i in range(moved.GetNumberOfPoints())
+                            if moved.GetPoint(i) != before.GetPoint(i))
+print(f"rank {rank}: piece {piece.GetNumberOfPoints()} points "
+      f"({piece.GetActualMemorySize() / 1024.0:.0f} MB); growth at setup {setup:.0f} MB, after ten "
+      f"moves {moves:.0f} MB; the first rank's edit: {figures}", flush=True)
