@@ -23,9 +23,9 @@
  * the order or the solver refactors.
  *
  * Input requirements: polygons (quads and other polygons are split into triangle fans for the
- * operator; the output keeps the input's cells). Points that share a position are treated as
- * one surface vertex (MergeCoincidentPoints, on by default), so texture seams and triangle soups
- * edit as one surface. Points no polygon uses are never edited.
+ * operator; the output keeps the input's cells). Points that share a position, up to rounding,
+ * are treated as one surface vertex (MergeCoincidentPoints, on by default), so texture seams,
+ * triangle soups and the seams of parallel pieces edit as one surface. Points no polygon uses are never edited.
  *
  * CommitEdit() makes the current result the rest shape of the next edit without touching the
  * pipeline connection (as CGAL's overwrite_initial_geometry()); UndoCommit() goes back one
@@ -366,7 +366,8 @@ public:
 
   /**
    * Treat input points at the same position as one surface vertex, so that texture seams and
-   * triangle soups edit as one surface. Default on.
+   * triangle soups edit as one surface. Positions equal to 1e-10 of the region's size in every
+   * coordinate are the same: copies computed separately differ by rounding. Default on.
    */
   vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
   vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);

@@ -1,5 +1,6 @@
 #include "vtkLaplacianSurfaceAdapter.h"
 
+#include "CoincidentPoints.h"
 #include "SurfaceMesh.h"
 
 #include "vtkCellArray.h"
@@ -21,7 +22,6 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <set>
 #include <unordered_map>
 
 namespace le = LaplacianEditing;
@@ -258,20 +258,23 @@ std::string vtkLaplacianSurfaceAdapter::Build(
       });
     }
   });
-  if (mergeCoincidentPoints && reach.Margin >= 0.0)
+  if (mergeCoincidentPoints && reach.Margin >= 0.0 && !ring.empty())
   {
-    // The ring's points at the same position as another point are that point too (a seam, a
-    // triangle soup): mark their copies, so that the ring keeps its whole one-ring.
-    std::set<std::array<double, 3>> positions;
+    // The ring's points that coincide with another point are that point too (a seam, a
+    // triangle soup): mark their copies, so that the ring keeps its whole one-ring. The
+    // tolerance, relative to the whole input, is at least the mesh's, relative to the part kept.
+    double bounds[6];
+    input->GetPoints()->GetBounds(bounds);
+    const le::Vector3 low(bounds[0], bounds[2], bounds[4]);
+    const double diagonal = (le::Vector3(bounds[1], bounds[3], bounds[5]) - low).norm();
+    le::CoincidentPoints copies(le::CoincidentPoints::RelativeTolerance * diagonal, low);
     for (vtkIdType id : ring)
     {
-      const double* p = input->GetPoint(id);
-      positions.insert({ p[0], p[1], p[2] });
+      copies.Add(le::Vector3(input->GetPoint(id)), 0);
     }
-    for (vtkIdType i = 0; i < numberOfPoints && !positions.empty(); ++i)
+    for (vtkIdType i = 0; i < numberOfPoints; ++i)
     {
-      const double* p = input->GetPoint(i);
-      mark[i] = mark[i] ? mark[i] : (positions.count({ p[0], p[1], p[2] }) ? 2 : 0);
+      mark[i] = mark[i] ? mark[i] : (copies.Find(le::Vector3(input->GetPoint(i))) == 0 ? 2 : 0);
     }
   }
   std::unordered_map<vtkIdType, std::int64_t> pointOfInput;

@@ -7,7 +7,7 @@
  * ball around the handle centre, or around the labelled points, from a few reductions and the
  * labelled points), widened by two of the longest edges so that the ring around the region
  * comes along whole; each rank sends only its polygons in that part, which the first rank edits
- * (coincident piece-boundary points merge into one vertex), and each rank gets back only its
+ * (piece-boundary points that coincide, up to rounding, merge into one vertex), and each rank gets back only its
  * points there. The first rank's memory and the traffic of a move follow the part, not the
  * surface. The first rank caches the gathered part on the pieces' content, the selection and
  * the reach, so a handle move sends no geometry up. Point and polygon normals come back

@@ -1,5 +1,7 @@
 #include "SurfaceMesh.h"
 
+#include "CoincidentPoints.h"
+
 #include <algorithm>
 #include <tuple>
 #include <limits>
@@ -43,13 +45,17 @@ SurfaceMesh SurfaceMesh::FromPolygons(const std::vector<Vector3>& points,
         points[a].data(), points[a].data() + 3, points[b].data(), points[b].data() + 3);
     };
     std::sort(order.begin(), order.end(), lexicographic);
-    for (std::size_t i = 0; i < order.size(); ++i)
+    CoincidentPoints merged(CoincidentPoints::RelativeTolerance, Vector3::Zero());
+    for (int point : order)
     {
-      if (i == 0 || points[order[i]] != points[order[i - 1]])
+      int vertex = merged.Find(points[point]);
+      if (vertex < 0)
       {
-        mesh.Positions.push_back(points[order[i]]);
+        vertex = static_cast<int>(mesh.Positions.size());
+        mesh.Positions.push_back(points[point]);
+        merged.Add(points[point], vertex);
       }
-      mesh.VertexOfPoint[order[i]] = static_cast<int>(mesh.Positions.size()) - 1;
+      mesh.VertexOfPoint[point] = vertex;
     }
   }
   else

@@ -23,7 +23,9 @@ public:
   /// oriented consistently across manifold edges, each connected patch following the
   /// orientation of most of its input triangles, so that area-weighted normals do not cancel
   /// on meshes whose faces are wound inconsistently.
-  /// With `mergeCoincidentPoints` false, each input point is its own vertex.
+  /// With `mergeCoincidentPoints`, points within CoincidentPoints::RelativeTolerance of each
+  /// other in every coordinate are one vertex (positions are expected in units of the mesh's
+  /// size, as the VTK adapter gives them); without, each input point is its own vertex.
   static SurfaceMesh FromPolygons(const std::vector<Vector3>& points,
     const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& connectivity,
     bool mergeCoincidentPoints);

@@ -3,8 +3,10 @@
     mpiexec -np 2 pvbatch --symmetric ParallelRegionMemory.py PLUGIN [THETA PHI]
 
 Each rank generates its piece of a sphere (default 2000 x 1002: 2M points, 4M triangles), the
-filter edits a region of about 7k vertices around (0.5, 0, 0), and every rank prints its growth
-at setup and after ten handle moves; the first rank, which solves, also the points it gathered.
+filter edits a region of 4,337 vertices around (0.5, 0, 0), on the seam of the pieces, and every
+rank prints its growth at setup and after ten handle moves, and how many of its points moved;
+the first rank, which solves, also the points it gathered. It fails (exit 1) if that rank
+gathered more than four times the region, or more than 5% of the surface.
 """
 import sys
 
@@ -49,3 +51,6 @@ figures["moved here"] = sum(1 for i in range(moved.GetNumberOfPoints())
 print(f"rank {rank}: piece {piece.GetNumberOfPoints()} points "
       f"({piece.GetActualMemorySize() / 1024.0:.0f} MB); growth at setup {setup:.0f} MB, after ten "
       f"moves {moves:.0f} MB; the first rank's edit: {figures}", flush=True)
+gathered, region = figures["NumberOfGatheredPoints"], figures["NumberOfROIVertices"]
+if rank == 0 and not (region > 0 and gathered <= 4 * region and gathered <= 0.05 * theta * phi):
+    sys.exit(f"FAILED: the first rank gathered {gathered} points for a region of {region}")

@@ -2,6 +2,7 @@
 into pieces across the ranks and write every output point, its normal and its EditRole to a
 file. With LAPLACIAN_PARALLEL_SELECTION=1 the handle is a ParaView selection (a threshold on
 the x coordinate, the same points on every rank) instead of HandleCenter and HandleRadius.
+MESH "sphere" edits ParaView's sphere source on its seam instead of a file.
 
     [mpiexec -np 2] pvbatch TestParallel.py PLUGIN POINTS.txt MESH
     pvpython TestParallel.py PLUGIN POINTS.txt MESH SERVER_PORT
@@ -18,12 +19,17 @@ if len(sys.argv) > 4:
     LoadPlugin(sys.argv[1], remote=True)  # the server runs the filter
 LoadPlugin(sys.argv[1], remote=False)
 from paraview.simple import (ExtractSurface, GenerateSurfaceNormals, OpenDataFile,  # noqa: E402
-                             RedistributeDataSet)
+                             RedistributeDataSet, Sphere)
 import paraview.simple as simple  # noqa: E402
 
-# The mesh is read on the first rank and redistributed: each rank gets a piece, and the pieces
-# repeat their shared boundary points, as ParaView's parallel pipelines do.
-mesh = ExtractSurface(Input=RedistributeDataSet(Input=OpenDataFile(sys.argv[3])))
+if sys.argv[3] == "sphere":
+    # ParaView's sphere source: each rank generates a slice, and the slices repeat their seam
+    # points a few ulps apart (sin(2 pi) is -2.4e-16, not 0). The handle sits on that seam.
+    mesh = Sphere(ThetaResolution=64, PhiResolution=48, Radius=0.5)
+else:
+    # The mesh is read on the first rank and redistributed: each rank gets a piece, and the
+    # pieces repeat their shared boundary points, as ParaView's parallel pipelines do.
+    mesh = ExtractSurface(Input=RedistributeDataSet(Input=OpenDataFile(sys.argv[3])))
 # Point normals (one per point, no splitting), which the edit must refresh on every rank.
 mesh = GenerateSurfaceNormals(Input=mesh, Splitting=0, Consistency=0)
 bounds = servermanager.Fetch(mesh).GetBounds()

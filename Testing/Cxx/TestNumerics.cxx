@@ -1,6 +1,7 @@
 // Unit tests of the VTK-free numerical core: operators, regions, the editing system, solvers.
 #include "NumericsTestMeshes.h"
 
+#include "CoincidentPoints.h"
 #include "DeformationSystem.h"
 #include "EditRegion.h"
 #include "GeodesicDistance.h"
@@ -57,6 +58,30 @@ TEST(SurfaceMesh, MergesCoincidentPointsAndSplitsQuads)
   const SurfaceMesh split = SurfaceMesh::FromPolygons(points, offsets, connectivity, false);
   EXPECT_EQ(split.GetNumberOfVertices(), 8);
   EXPECT_EQ(split.GetNumberOfComponents(), 2);
+}
+
+TEST(SurfaceMesh, MergesSeamCopiesThatDifferByRounding)
+{
+  // The same seam, its copies a few ulps apart as separately computed pieces give them
+  // (sin(2 pi) is -2.4e-16, not 0): one straddles the bin border at 0. A point 1e-6 away, far
+  // more than rounding, stays a vertex of its own.
+  const double ulps = 2.4e-16;
+  const std::vector<Vector3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 1 + ulps, -ulps, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1 - ulps, 1, ulps } };
+  const std::vector<std::int64_t> offsets = { 0, 4, 8 };
+  const std::vector<std::int64_t> connectivity = { 0, 1, 2, 3, 4, 5, 6, 7 };
+  const SurfaceMesh merged = SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+  EXPECT_EQ(merged.GetNumberOfVertices(), 6);
+  EXPECT_EQ(merged.GetNumberOfComponents(), 1);
+  std::vector<Vector3> apart = points;
+  apart[4] += Vector3(1e-6, 0, 0);
+  EXPECT_EQ(SurfaceMesh::FromPolygons(apart, offsets, connectivity, true).GetNumberOfVertices(), 7);
+
+  CoincidentPoints copies(1e-10, Vector3::Zero());
+  copies.Add(Vector3(0, -1e-17, 0), 3);
+  copies.Add(Vector3(0, 1e-17, 0), 2);
+  EXPECT_EQ(copies.Find(Vector3(1e-11, 0, -1e-11)), 2); // the smallest id of the two
+  EXPECT_EQ(copies.Find(Vector3(0, 2e-10, 0)), -1);
 }
 
 TEST(GeodesicDistance, FollowsEdgesOnAGrid)

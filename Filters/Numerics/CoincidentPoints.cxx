@@ -1,0 +1,96 @@
+#include "CoincidentPoints.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace LaplacianEditing
+{
+namespace
+{
+// Bins much larger than the tolerance, so that a point near enough a bin's border to have a
+// twin across it is rare, and most lookups read one bin.
+constexpr double BinsPerTolerance = 1024.0;
+}
+
+CoincidentPoints::CoincidentPoints(double tolerance, const Vector3& origin)
+  : Tolerance(tolerance)
+  , BinSize(BinsPerTolerance * tolerance > 0.0 ? BinsPerTolerance * tolerance : 1.0)
+  , Origin(origin)
+{
+}
+
+std::size_t CoincidentPoints::BinHash::operator()(const Bin& bin) const
+{
+  std::size_t hash = 0;
+  for (std::int64_t index : bin)
+  {
+    hash = hash * 1000003u ^ std::hash<std::int64_t>()(index);
+  }
+  return hash;
+}
+
+CoincidentPoints::Bin CoincidentPoints::BinOf(const Vector3& p) const
+{
+  Bin bin;
+  for (int a = 0; a < 3; ++a)
+  {
+    // Clamped so that a point far from the origin cannot overflow the index.
+    const double index = std::floor((p[a] - this->Origin[a]) / this->BinSize);
+    bin[a] = static_cast<std::int64_t>(std::max(-4e18, std::min(4e18, index)));
+  }
+  return bin;
+}
+
+int CoincidentPoints::Find(const Vector3& p) const
+{
+  const Bin bin = this->BinOf(p);
+  // Per axis, the bins a twin can lie in: this one, and a neighbour whose border is within
+  // the tolerance.
+  std::array<std::array<int, 3>, 3> steps;
+  std::array<int, 3> counts;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double low = this->Origin[a] + static_cast<double>(bin[a]) * this->BinSize;
+    counts[a] = 0;
+    steps[a][counts[a]++] = 0;
+    if (p[a] - low <= this->Tolerance)
+    {
+      steps[a][counts[a]++] = -1;
+    }
+    if (low + this->BinSize - p[a] <= this->Tolerance)
+    {
+      steps[a][counts[a]++] = 1;
+    }
+  }
+  int found = -1;
+  for (int i = 0; i < counts[0]; ++i)
+  {
+    for (int j = 0; j < counts[1]; ++j)
+    {
+      for (int k = 0; k < counts[2]; ++k)
+      {
+        const auto entry =
+          this->Bins.find({ bin[0] + steps[0][i], bin[1] + steps[1][j], bin[2] + steps[2][k] });
+        if (entry == this->Bins.end())
+        {
+          continue;
+        }
+        for (const auto& point : entry->second)
+        {
+          if ((point.first - p).cwiseAbs().maxCoeff() <= this->Tolerance &&
+            (found < 0 || point.second < found))
+          {
+            found = point.second;
+          }
+        }
+      }
+    }
+  }
+  return found;
+}
+
+void CoincidentPoints::Add(const Vector3& p, int id)
+{
+  this->Bins[this->BinOf(p)].emplace_back(p, id);
+}
+}
