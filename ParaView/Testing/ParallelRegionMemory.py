@@ -1,14 +1,16 @@
 """Memory of an edit under MPI, per rank, against the size of the surface.
 
-    mpiexec -np 2 pvbatch --symmetric ParallelRegionMemory.py PLUGIN [THETA PHI]
+    mpiexec -np 2 pvbatch --symmetric ParallelRegionMemory.py PLUGIN [THETA PHI [ROI]]
 
 Each rank generates its piece of a sphere (default 2000 x 1002: 2M points, 4M triangles), the
 filter edits a region of 4,337 vertices around (0.5, 0, 0), on the seam of the pieces, and every
-rank prints its growth at setup and after ten handle moves, and how many of its points moved;
+rank prints its growth and the time at setup and after ten handle moves, and how many of its
+points moved (ROI: the ROI radius as a fraction of the diagonal, 0.034 by default);
 the first rank, which solves, also the points it gathered. It fails (exit 1) if that rank
 gathered more than four times the region, or more than 5% of the surface.
 """
 import sys
+import time
 
 from paraview.simple import LoadPlugin, Sphere
 
@@ -25,6 +27,7 @@ def rss_mb():
 
 
 theta, phi = (int(a) for a in sys.argv[2:4]) if len(sys.argv) > 3 else (2000, 1002)
+roi = float(sys.argv[4]) if len(sys.argv) > 4 else 0.034
 sphere = Sphere(ThetaResolution=theta, PhiResolution=phi, Radius=0.5)
 sphere.UpdatePipeline()
 piece = sphere.GetClientSideObject().GetOutputDataObject(0)
@@ -33,12 +36,16 @@ deform = simple.LaplacianDeformation(Input=sphere)
 deform.HandleCenter = [0.5, 0.0, 0.0]
 diagonal = 3 ** 0.5  # as RegionMemory.py's radii, fractions of the diagonal
 deform.HandleRadius = 0.01 * diagonal
-deform.ROIRadius = 0.034 * diagonal
+deform.ROIRadius = roi * diagonal
+start = time.perf_counter()
 deform.UpdatePipeline()
+setup_seconds = time.perf_counter() - start
 setup = rss_mb() - base
+start = time.perf_counter()
 for k in range(1, 11):
     deform.HandleTranslation = [0.002 * k, 0.0, 0.0]
     deform.UpdatePipeline()
+move_ms = (time.perf_counter() - start) * 100.0
 moves = rss_mb() - base
 deform.UpdatePropertyInformation()  # the first rank's figures
 rank = vtkMultiProcessController.GetGlobalController().GetLocalProcessId()
@@ -50,7 +57,8 @@ figures["moved here"] = sum(1 for i in range(moved.GetNumberOfPoints())
                             if moved.GetPoint(i) != before.GetPoint(i))
 print(f"rank {rank}: piece {piece.GetNumberOfPoints()} points "
       f"({piece.GetActualMemorySize() / 1024.0:.0f} MB); growth at setup {setup:.0f} MB, after ten "
-      f"moves {moves:.0f} MB; the first rank's edit: {figures}", flush=True)
+      f"moves {moves:.0f} MB; setup {setup_seconds:.2f} s, a move {move_ms:.1f} ms; the first "
+      f"rank's edit: {figures}", flush=True)
 gathered, region = figures["NumberOfGatheredPoints"], figures["NumberOfROIVertices"]
 if rank == 0 and not (region > 0 and gathered <= 4 * region and gathered <= 0.05 * theta * phi):
     sys.exit(f"FAILED: the first rank gathered {gathered} points for a region of {region}")
