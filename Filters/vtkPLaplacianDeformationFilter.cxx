@@ -4,12 +4,13 @@
 #include "vtkBoundingBox.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
-#include "vtkCommunicator.h"
 #include "vtkCellData.h"
+#include "vtkCommunicator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -18,7 +19,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSelection.h"
-#include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkSignedCharArray.h"
 
 #include <algorithm>
