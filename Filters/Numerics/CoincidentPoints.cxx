@@ -69,18 +69,15 @@ int CoincidentPoints::Find(const Vector3& p) const
     {
       for (int k = 0; k < counts[2]; ++k)
       {
-        const auto entry =
-          this->Bins.find({ bin[0] + steps[0][i], bin[1] + steps[1][j], bin[2] + steps[2][k] });
-        if (entry == this->Bins.end())
+        const auto last =
+          this->LastInBin.find({ bin[0] + steps[0][i], bin[1] + steps[1][j], bin[2] + steps[2][k] });
+        for (int point = last == this->LastInBin.end() ? -1 : last->second; point >= 0;
+             point = this->PreviousInBin[point])
         {
-          continue;
-        }
-        for (const auto& point : entry->second)
-        {
-          if ((point.first - p).cwiseAbs().maxCoeff() <= this->Tolerance &&
-            (found < 0 || point.second < found))
+          if ((this->Positions[point] - p).cwiseAbs().maxCoeff() <= this->Tolerance &&
+            (found < 0 || this->Ids[point] < found))
           {
-            found = point.second;
+            found = this->Ids[point];
           }
         }
       }
@@ -91,6 +88,11 @@ int CoincidentPoints::Find(const Vector3& p) const
 
 void CoincidentPoints::Add(const Vector3& p, int id)
 {
-  this->Bins[this->BinOf(p)].emplace_back(p, id);
+  const int point = static_cast<int>(this->Positions.size());
+  this->Positions.push_back(p);
+  this->Ids.push_back(id);
+  const auto inserted = this->LastInBin.emplace(this->BinOf(p), point);
+  this->PreviousInBin.push_back(inserted.second ? -1 : inserted.first->second);
+  inserted.first->second = point;
 }
 }

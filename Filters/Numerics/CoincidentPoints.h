@@ -9,7 +9,6 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace LaplacianEditing
@@ -40,7 +39,11 @@ private:
   double Tolerance;
   double BinSize;
   Vector3 Origin;
-  std::unordered_map<Bin, std::vector<std::pair<Vector3, int>>, BinHash> Bins;
+  // Per bin its last added point; each point links to the one added before it in its bin.
+  std::unordered_map<Bin, int, BinHash> LastInBin;
+  std::vector<Vector3> Positions;
+  std::vector<int> Ids;
+  std::vector<int> PreviousInBin;
 };
 }
 
