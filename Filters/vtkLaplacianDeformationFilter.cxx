@@ -320,18 +320,23 @@ void vtkLaplacianDeformationFilter::ResetStatistics()
   this->ARAPEnergy = 0.0;
 }
 
+double vtkLaplacianDeformationFilter::DiagonalOfWhole(double ownDiagonal) const
+{
+  return this->WholeDiagonal > 0.0 ? this->WholeDiagonal : ownDiagonal;
+}
+
 double vtkLaplacianDeformationFilter::AbsoluteRadius(double radius) const
 {
-  const double diagonal = this->WholeDiagonal > 0.0 ? this->WholeDiagonal : this->Internals->Diagonal;
-  return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION ? radius * diagonal : radius;
+  return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION
+    ? radius * this->DiagonalOfWhole(this->Internals->Diagonal)
+    : radius;
 }
 
 double vtkLaplacianDeformationFilter::GetRadiusScale()
 {
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
-  const double diagonal = this->WholeDiagonal > 0.0 ? this->WholeDiagonal
-    : input && input->GetNumberOfPoints() > 0    ? input->GetLength()
-                                                 : 0.0;
+  const double diagonal =
+    this->DiagonalOfWhole(input && input->GetNumberOfPoints() > 0 ? input->GetLength() : 0.0);
   return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION && diagonal > 0.0 ? diagonal : 1.0;
 }
 
@@ -606,7 +611,7 @@ bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
   // The surface graph depends on the rest surface and on the part of it the edit can reach.
   vtkInternals& internals = *this->Internals;
   const vtkMTimeType time = vtkLaplacianSurfaceAdapter::GetContentTime(rest);
-  internals.Diagonal = this->WholeDiagonal > 0.0 ? this->WholeDiagonal : rest->GetLength();
+  internals.Diagonal = rest->GetLength();
   this->ComputeReach(rest);
   const vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
   if (time == internals.SurfaceTime && this->MergeCoincidentPoints == internals.SurfaceMerge &&

@@ -25,7 +25,8 @@
  * Input requirements: polygons (quads and other polygons are split into triangle fans for the
  * operator; the output keeps the input's cells). Points that share a position, up to rounding,
  * are treated as one surface vertex (MergeCoincidentPoints, on by default), so texture seams,
- * triangle soups and the seams of parallel pieces edit as one surface. Points no polygon uses are never edited.
+ * triangle soups and the seams of parallel pieces edit as one surface. Points no polygon uses
+ * are never edited.
  *
  * CommitEdit() makes the current result the rest shape of the next edit without touching the
  * pipeline connection (as CGAL's overwrite_initial_geometry()); UndoCommit() goes back one
@@ -55,8 +56,8 @@
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
-class vtkPoints;
 class vtkIntArray;
+class vtkPoints;
 class vtkSelection;
 
 class VTKLAPLACIANEDITING_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
@@ -629,6 +630,8 @@ private:
   void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
   bool Fail(const std::string& message);
   void ResetStatistics();
+  // WholeDiagonal where set, else `ownDiagonal`: what radii in diagonal units refer to.
+  double DiagonalOfWhole(double ownDiagonal) const;
   // Warnings about a region that is unlikely what the user meant.
   void WarnAboutRegion(int centerVertex);
   vtkPolyData* RestSurface(vtkPolyData* input);

@@ -23,13 +23,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 vtkStandardNewMacro(vtkPLaplacianDeformationFilter);
 
 struct vtkPLaplacianDeformationFilter::vtkInternals
 {
+  // The current reach and, on rank 0, the one the parts were gathered for.
   vtkLaplacianSurfaceAdapter::Reach Reach;
   vtkLaplacianSurfaceAdapter::Reach GatheredReach;
+  // This piece's selection labels and what they were made for (selection and piece times).
+  vtkSmartPointer<vtkIntArray> PieceLabels;
+  vtkMTimeType PieceLabelsKey[2] = { 0, 0 };
+  // This piece's longest polygon edge and the piece content time it was measured on.
+  vtkMTimeType LongestEdgeTime = 0;
+  double LongestEdge = 0.0;
+  // Rank 0: the gathered parts, what they were gathered for (each piece's content time and
+  // selection MTime), and each piece's point and polygon counts in them.
+  vtkSmartPointer<vtkPolyData> Gathered;
+  std::vector<double> PieceTimes;
+  std::vector<vtkIdType> PieceSizes;
+  std::vector<vtkIdType> PieceCellSizes;
 };
 vtkCxxSetObjectMacro(vtkPLaplacianDeformationFilter, Controller, vtkMultiProcessController);
 
@@ -67,7 +81,7 @@ int vtkPLaplacianDeformationFilter::RequestData(
   vtkNew<vtkPolyData> edited;
   if (this->GatherPieces(input, selection))
   {
-    this->EditSurface(this->Gathered, edited);
+    this->EditSurface(this->Internals->Gathered, edited);
   }
   this->ScatterPoints(input, edited, output);
   return 1;
@@ -75,22 +89,23 @@ int vtkPLaplacianDeformationFilter::RequestData(
 
 vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vtkSelection* selection)
 {
+  vtkInternals& internals = *this->Internals;
   // A selection's labels on this piece, made again only when the selection or the piece changes;
   // in array mode the labels array itself.
   if (!selection)
   {
-    this->PieceLabels = nullptr;
+    internals.PieceLabels = nullptr;
     return this->SelectionMode == SELECTION_ARRAY ? this->GetInputArrayToProcess(0, input) : nullptr;
   }
   const vtkMTimeType key[2] = { selection->GetMTime(),
     vtkLaplacianSurfaceAdapter::GetContentTime(input) };
-  if (!this->PieceLabels || !std::equal(key, key + 2, this->PieceLabelsKey))
+  if (!internals.PieceLabels || !std::equal(key, key + 2, internals.PieceLabelsKey))
   {
-    std::copy(key, key + 2, this->PieceLabelsKey);
-    this->PieceLabels = LabelSelection(input, selection, this->Controller->GetLocalProcessId());
-    this->PieceLabels->SetName(GatheredLabels);
+    std::copy(key, key + 2, internals.PieceLabelsKey);
+    internals.PieceLabels = LabelSelection(input, selection, this->Controller->GetLocalProcessId());
+    internals.PieceLabels->SetName(GatheredLabels);
   }
-  return this->PieceLabels;
+  return internals.PieceLabels;
 }
 
 void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
@@ -173,11 +188,11 @@ void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
 double vtkPLaplacianDeformationFilter::LongestPolygonEdge(vtkPolyData* input)
 {
   // One pass over the polygons, repeated only when the piece changes.
+  vtkInternals& internals = *this->Internals;
   const vtkMTimeType time = vtkLaplacianSurfaceAdapter::GetContentTime(input);
-  if (time != this->LongestEdgeTime)
+  if (time != internals.LongestEdgeTime)
   {
-    this->LongestEdgeTime = time;
-    this->LongestEdge = 0.0;
+    double longest2 = 0.0;
     auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
     for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
     {
@@ -186,18 +201,20 @@ double vtkPLaplacianDeformationFilter::LongestPolygonEdge(vtkPolyData* input)
       cells->GetCurrentCell(size, ids);
       for (vtkIdType c = 0; c < size; ++c)
       {
-        this->LongestEdge = std::max(this->LongestEdge,
+        longest2 = std::max(longest2,
           vtkMath::Distance2BetweenPoints(input->GetPoint(ids[c]), input->GetPoint(ids[(c + 1) % size])));
       }
     }
-    this->LongestEdge = std::sqrt(this->LongestEdge);
+    internals.LongestEdgeTime = time;
+    internals.LongestEdge = std::sqrt(longest2);
   }
-  return this->LongestEdge;
+  return internals.LongestEdge;
 }
 
 bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelection* selection)
 {
-  const vtkLaplacianSurfaceAdapter::Reach& reach = this->Internals->Reach;
+  vtkInternals& internals = *this->Internals;
+  const vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
   // Each rank sends the part of its piece in reach; geometry travels only when some piece, the
   // selection or the reach changed.
   vtkMultiProcessController* controller = this->Controller;
@@ -207,8 +224,9 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelecti
     selection ? static_cast<double>(selection->GetMTime()) : 0.0 };
   std::vector<double> times(2 * ranks, 0.0);
   controller->Gather(localTimes, times.data(), 2, 0);
-  double changed =
-    first && (times != this->PieceTimes || !this->Gathered || !(reach == this->Internals->GatheredReach)) ? 1.0 : 0.0;
+  const bool stale =
+    times != internals.PieceTimes || !internals.Gathered || !(reach == internals.GatheredReach);
+  double changed = first && stale ? 1.0 : 0.0;
   controller->Broadcast(&changed, 1, 0);
   if (changed == 0.0)
   {
@@ -216,9 +234,9 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelecti
   }
   vtkNew<vtkPolyData> source;
   source->ShallowCopy(input);
-  if (this->PieceLabels)
+  if (internals.PieceLabels)
   {
-    source->GetPointData()->AddArray(this->PieceLabels);
+    source->GetPointData()->AddArray(internals.PieceLabels);
   }
   vtkSmartPointer<vtkPolyData> part = vtkLaplacianSurfaceAdapter::ExtractReach(source, reach);
   std::vector<vtkSmartPointer<vtkDataObject>> parts;
@@ -226,24 +244,24 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelecti
   if (first)
   {
     vtkNew<vtkAppendPolyData> append;
-    this->PieceSizes.assign(ranks, 0);
-    this->PieceCellSizes.assign(ranks, 0);
+    internals.PieceSizes.assign(ranks, 0);
+    internals.PieceCellSizes.assign(ranks, 0);
     for (int r = 0; r < ranks; ++r)
     {
       auto* piece = vtkPolyData::SafeDownCast(parts[r]);
       if (piece && piece->GetNumberOfPoints() > 0)
       {
-        this->PieceSizes[r] = piece->GetNumberOfPoints();
-        this->PieceCellSizes[r] = piece->GetNumberOfCells();
+        internals.PieceSizes[r] = piece->GetNumberOfPoints();
+        internals.PieceCellSizes[r] = piece->GetNumberOfCells();
         append->AddInputData(piece);
       }
     }
     append->Update();
-    this->Gathered = vtkSmartPointer<vtkPolyData>::New();
-    this->Gathered->ShallowCopy(append->GetOutput());
-    this->NumberOfGatheredPoints = this->Gathered->GetNumberOfPoints();
-    this->PieceTimes = times;
-    this->Internals->GatheredReach = reach;
+    internals.Gathered = vtkSmartPointer<vtkPolyData>::New();
+    internals.Gathered->ShallowCopy(append->GetOutput());
+    this->NumberOfGatheredPoints = internals.Gathered->GetNumberOfPoints();
+    internals.PieceTimes = times;
+    internals.GatheredReach = reach;
   }
   return first;
 }
@@ -251,7 +269,7 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelecti
 vtkSmartPointer<vtkIntArray> vtkPLaplacianDeformationFilter::SelectionLabels(
   vtkPolyData* input, vtkSelection* selection)
 {
-  vtkIntArray* gathered = input == this->Gathered
+  vtkIntArray* gathered = input == this->Internals->Gathered
     ? vtkIntArray::SafeDownCast(input->GetPointData()->GetArray(GatheredLabels))
     : nullptr;
   if (gathered)
@@ -264,6 +282,7 @@ vtkSmartPointer<vtkIntArray> vtkPLaplacianDeformationFilter::SelectionLabels(
 void vtkPLaplacianDeformationFilter::ScatterPoints(
   vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output)
 {
+  vtkInternals& internals = *this->Internals;
   // Each rank gets back only its part in reach: per point its id in the piece, coordinates,
   // EditRole and, where the edited surface has them, the refreshed normal; per polygon its id
   // and refreshed normal. Everything else is the piece as it came in.
@@ -283,12 +302,12 @@ void vtkPLaplacianDeformationFilter::ScatterPoints(
   if (first)
   {
     vtkDataArray* roles = edited->GetPointData()->GetArray("EditRole");
-    vtkDataArray* pointIds = this->Gathered->GetPointData()->GetArray("vtkOriginalPointIds");
-    vtkDataArray* cellIds = this->Gathered->GetCellData()->GetArray("vtkOriginalCellIds");
+    vtkDataArray* pointIds = internals.Gathered->GetPointData()->GetArray("vtkOriginalPointIds");
+    vtkDataArray* cellIds = internals.Gathered->GetCellData()->GetArray("vtkOriginalCellIds");
     vtkIdType offset = 0, cellOffset = 0;
     for (int r = 0; r < controller->GetNumberOfProcesses(); ++r)
     {
-      const vtkIdType rankSizes[2] = { this->PieceSizes[r], this->PieceCellSizes[r] };
+      const vtkIdType rankSizes[2] = { internals.PieceSizes[r], internals.PieceCellSizes[r] };
       std::vector<double> values(pointWidth * rankSizes[0] + cellWidth * rankSizes[1]);
       for (vtkIdType i = 0; i < rankSizes[0] && edited->GetPoints(); ++i)
       {

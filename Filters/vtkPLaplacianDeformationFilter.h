@@ -26,7 +26,6 @@
 #include "vtkSmartPointer.h"           // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
-#include <vector> // for std::vector
 
 class vtkDataArray;
 class vtkDataSetAttributes;
@@ -83,19 +82,9 @@ private:
   void ScatterPoints(vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output);
   static vtkSmartPointer<vtkDataArray> WritableNormals(vtkDataSetAttributes* attributes, bool refreshed);
 
-  vtkSmartPointer<vtkIntArray> PieceLabels;
-  vtkMTimeType PieceLabelsKey[2] = { 0, 0 };
-  vtkMTimeType LongestEdgeTime = 0;
-  double LongestEdge = 0.0;
-  // The current reach and, on rank 0, the one the parts were gathered for.
+  // The reach, the piece's caches and, on rank 0, the gathered parts.
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
-  // Rank 0: the gathered parts, what they were gathered for (each piece's content time and
-  // selection MTime), and each piece's point and polygon counts in them.
-  vtkSmartPointer<vtkPolyData> Gathered;
-  std::vector<double> PieceTimes;
-  std::vector<vtkIdType> PieceSizes;
-  std::vector<vtkIdType> PieceCellSizes;
 };
 
 #endif
