@@ -260,7 +260,7 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
       rhs.row(u) = b.transpose();
     }
   });
-  return this->Factor.Solve(rhs);
+  return this->Factor.Solve(rhs, loop);
 }
 
 ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const

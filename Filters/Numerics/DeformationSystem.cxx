@@ -73,7 +73,8 @@ std::string DeformationSystem::Build(
     normalMatrix.coeffRef(k, k) += this->SquaredWeights[k];
   }
   normalMatrix.makeCompressed();
-  this->RestRightHandSide = this->RegionOperator.transpose() * (this->RestDelta - this->FixedPart);
+  this->RegionOperatorTransposed = this->RegionOperator.transpose();
+  this->RestRightHandSide = this->RegionOperatorTransposed * (this->RestDelta - this->FixedPart);
   const std::string error = this->Factor.Factorize(
     normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
   if (!error.empty())
@@ -192,10 +193,21 @@ Positions DeformationSystem::SolveDirect(const std::vector<AffineMap>& handleMap
 }
 
 Positions DeformationSystem::SolveWithDifferentialCoordinates(
-  const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps) const
+  const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps,
+  const ParallelFor& loop) const
 {
-  return this->Factor.Solve(
-    this->RegionOperator.transpose() * (differentialCoordinates - this->FixedPart) +
-    this->ConstraintRightHandSide(handleMaps));
+  const Positions residual = differentialCoordinates - this->FixedPart;
+  Positions rhs = this->ConstraintRightHandSide(handleMaps);
+  const auto& transposed = this->RegionOperatorTransposed;
+  loop(0, this->GetNumberOfUnknowns(), [&](int first, int last) {
+    for (int k = first; k < last; ++k)
+    {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(transposed, k); it; ++it)
+      {
+        rhs.row(k) += it.value() * residual.row(it.col());
+      }
+    }
+  });
+  return this->Factor.Solve(rhs, loop);
 }
 }

@@ -74,8 +74,8 @@ public:
   Positions SolveDirect(const std::vector<AffineMap>& handleMaps) const;
 
   /// The same with other differential coordinates, for example rotated ones.
-  Positions SolveWithDifferentialCoordinates(
-    const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps) const;
+  Positions SolveWithDifferentialCoordinates(const Positions& differentialCoordinates,
+    const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor) const;
 
   /// The constraints' share of A^T b: w_i^2 u_i, with u_i the transformed rest position of a
   /// handle vertex and the rest position of an anchor; zero for free vertices.
@@ -111,6 +111,8 @@ private:
     const LaplacianOperator& laplacian, const std::vector<int>& local);
 
   Eigen::SparseMatrix<double, Eigen::RowMajor> RegionOperator;
+  // Its transpose, stored by rows so that A^T r is a gather that rows can share out.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> RegionOperatorTransposed;
   SparseCholesky Factor;
   Positions RestPositions;
   Positions RestDelta;

@@ -245,7 +245,8 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
     if (rotation.PreserveDetailScale)
     {
       roiPositions = this->System.SolveWithDifferentialCoordinates(
-        this->Implicit->RotatedDifferentialCoordinates(roiPositions, this->Loop), handleMaps);
+        this->Implicit->RotatedDifferentialCoordinates(roiPositions, this->Loop), handleMaps,
+        this->Loop);
     }
   }
   else
@@ -261,7 +262,7 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
       {
         rotated = this->System.ComposeSecondOrder(rotated);
       }
-      roiPositions = this->System.SolveWithDifferentialCoordinates(rotated, handleMaps);
+      roiPositions = this->System.SolveWithDifferentialCoordinates(rotated, handleMaps, this->Loop);
     }
   }
   if (!roiPositions.allFinite())

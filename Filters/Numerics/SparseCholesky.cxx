@@ -2,9 +2,11 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <chrono>
+#include <thread>
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
-#include <Eigen/CholmodSupport>
+#include "CholmodFactor.h"
 #endif
 
 namespace LaplacianEditing
@@ -14,7 +16,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 struct SparseCholesky::Backend
 {
   virtual ~Backend() = default;
-  virtual Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const = 0;
+  virtual Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const = 0;
 };
 
 namespace
@@ -23,7 +25,10 @@ template <typename Solver>
 struct EigenBackend : SparseCholesky::Backend
 {
   Solver Factor;
-  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const override { return this->Factor.solve(rhs); }
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor&) const override
+  {
+    return this->Factor.solve(rhs);
+  }
 };
 }
 
@@ -51,69 +56,73 @@ double SecondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-template <typename Solver>
-void Configure(Solver&, FillOrdering)
-{
-}
-
-// Bytes of the factor the analysis predicts: unknown for Eigen's own solvers.
-template <typename Solver>
-double PredictedFactorBytes(Solver&)
-{
-  return 0.0;
-}
-
-#ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
-void Configure(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver, FillOrdering ordering)
-{
-  cholmod_common& common = solver.cholmod();
-  common.print = 0; // failures reach the caller as messages, not as CHOLMOD's own printing
-  common.nmethods = 1;
-  common.method[0].ordering = ordering == FillOrdering::AMD ? CHOLMOD_AMD
-    : ordering == FillOrdering::METIS                       ? CHOLMOD_METIS
-                                                            : CHOLMOD_NESDIS;
-  common.postorder = 1;
-}
-
-double PredictedFactorBytes(Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>& solver)
-{
-  // Values plus row indices of every stored nonzero.
-  return solver.cholmod().lnz * (sizeof(double) + sizeof(int));
-}
-#endif
-
 struct FactorReport
 {
   std::string Error;
   double AnalysisSeconds = 0.0;
   double FactorizationSeconds = 0.0;
   double FactorBytes = 0.0;
+  double ParallelShare = 0.0;
 };
 
-template <typename Solver>
-std::unique_ptr<SparseCholesky::Backend> FactorWith(
+const char* const NotPositiveDefinite = "the normal equations are not positive definite: some part "
+                                        "of the region is not held by any constraint";
+
+#ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
+struct CholmodBackend : SparseCholesky::Backend
+{
+  CholmodFactor Factor;
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const override
+  {
+    return this->Factor.Solve(rhs, loop);
+  }
+};
+
+std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(
   const SparseMatrix& matrix, FillOrdering ordering, double maximumBytes, FactorReport& report)
 {
-  auto backend = std::make_unique<EigenBackend<Solver>>();
-  Configure(backend->Factor, ordering);
+  auto backend = std::make_unique<CholmodBackend>();
   Clock::time_point start = Clock::now();
-  backend->Factor.analyzePattern(matrix);
+  const int parts = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  report.Error = backend->Factor.Analyze(matrix, ordering, parts);
   report.AnalysisSeconds = SecondsSince(start);
-  report.FactorBytes = PredictedFactorBytes(backend->Factor);
-  if (maximumBytes > 0.0 && report.FactorBytes > maximumBytes)
+  report.FactorBytes = backend->Factor.GetPredictedBytes();
+  report.ParallelShare = backend->Factor.GetParallelShare();
+  if (report.Error.empty() && maximumBytes > 0.0 && report.FactorBytes > maximumBytes)
   {
     report.Error = "the factor would need " + std::to_string(report.FactorBytes / 1048576.0) +
       " MB, more than the " + std::to_string(maximumBytes / 1048576.0) +
       " MB allowed; choose a smaller region of interest or raise the limit";
+  }
+  if (!report.Error.empty())
+  {
     return nullptr;
   }
+  start = Clock::now();
+  const bool factored = backend->Factor.Factorize(matrix);
+  report.FactorizationSeconds = SecondsSince(start);
+  if (!factored)
+  {
+    report.Error = NotPositiveDefinite;
+    return nullptr;
+  }
+  return backend;
+}
+#endif
+
+std::unique_ptr<SparseCholesky::Backend> FactorWithEigen(
+  const SparseMatrix& matrix, FactorReport& report)
+{
+  auto backend = std::make_unique<EigenBackend<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>>();
+  Clock::time_point start = Clock::now();
+  backend->Factor.analyzePattern(matrix);
+  report.AnalysisSeconds = SecondsSince(start);
   start = Clock::now();
   backend->Factor.factorize(matrix);
   report.FactorizationSeconds = SecondsSince(start);
   if (backend->Factor.info() != Eigen::Success)
   {
-    report.Error = "the normal equations are not positive definite: some part of the region is not "
-            "held by any constraint";
+    report.Error = NotPositiveDefinite;
     return nullptr;
   }
   return backend;
@@ -139,24 +148,23 @@ std::string SparseCholesky::Factorize(
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
   if (backend == SolverBackend::Cholmod)
   {
-    this->Impl = FactorWith<Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>>(
-      matrix, ordering, maximumBytes, report);
+    this->Impl = FactorWithCholmod(matrix, ordering, maximumBytes, report);
   }
   else
 #endif
   {
-    this->Impl = FactorWith<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>(
-      matrix, ordering, maximumBytes, report);
+    this->Impl = FactorWithEigen(matrix, report);
   }
   this->AnalysisSeconds = report.AnalysisSeconds;
   this->FactorizationSeconds = report.FactorizationSeconds;
   this->FactorBytes = report.FactorBytes;
+  this->ParallelShare = report.ParallelShare;
   return report.Error;
 }
 
-Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs) const
+Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const
 {
-  return this->Impl->Solve(rhs);
+  return this->Impl->Solve(rhs, loop);
 }
 
 bool SparseCholesky::IsFactorized() const

@@ -1,10 +1,11 @@
 // Factor once, solve many times: the kernel of interactive editing (Section 8).
 //
-// Backends: CHOLMOD's supernodal Cholesky through Eigen's CholmodSupport, which uses BLAS
-// threads for the dense supernodes, and Eigen's own SimplicialLDLT as the dependency-free
-// fallback.
+// Backends: CHOLMOD's supernodal Cholesky (CholmodFactor), which uses BLAS threads for the
+// dense supernodes, and Eigen's own SimplicialLDLT as the dependency-free fallback.
 #ifndef LaplacianEditing_SparseCholesky_h
 #define LaplacianEditing_SparseCholesky_h
+
+#include "ParallelFor.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -47,8 +48,9 @@ public:
   std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend,
     FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0);
 
-  /// Solves for every column of `rhs` with the current factor.
-  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const;
+  /// Solves for every column of `rhs` with the current factor. With CHOLMOD, solves for up to
+  /// four columns run independent subtrees of the factor through `loop`.
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop = SerialFor) const;
 
   bool IsFactorized() const;
 
@@ -57,6 +59,9 @@ public:
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
   /// Predicted (CHOLMOD) or actual bytes of the factor; 0 if unknown.
   double GetFactorBytes() const { return this->FactorBytes; }
+  /// Share of a few-column solve's work that runs in independent subtrees, in parallel when
+  /// the loop allows it (CHOLMOD; 0 otherwise).
+  double GetParallelShare() const { return this->ParallelShare; }
 
   /// The factor of one backend (defined in the .cxx).
   struct Backend;
@@ -66,6 +71,7 @@ private:
   double AnalysisSeconds = 0.0;
   double FactorizationSeconds = 0.0;
   double FactorBytes = 0.0;
+  double ParallelShare = 0.0;
 };
 }
 

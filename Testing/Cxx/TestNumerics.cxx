@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <limits>
 #include <functional>
+#include <thread>
 
 using namespace LaplacianEditing;
 using namespace LaplacianEditing::Testing;
@@ -378,6 +379,86 @@ TEST(DeformationSystem, SecondOrderGivesASmootherTransition)
             << ", second order " << joinSlope[1] << " (ratio " << joinSlope[0] / joinSlope[1]
             << ")\n";
   EXPECT_LT(joinSlope[1] * 5.0, joinSlope[0]);
+}
+
+// Each index range on its own thread: the real concurrency the filter's vtkSMPTools gives.
+void ThreadedFor(int begin, int end, const std::function<void(int, int)>& body)
+{
+  std::vector<std::thread> threads;
+  for (int i = begin; i < end; ++i)
+  {
+    threads.emplace_back(body, i, i + 1);
+  }
+  for (auto& thread : threads)
+  {
+    thread.join();
+  }
+}
+
+// D - A + 0.01 I over the edges of `mesh`, placed at `offset` in an n x n matrix.
+void AddShiftedGraphLaplacian(
+  const SurfaceMesh& mesh, int offset, std::vector<Eigen::Triplet<double>>& triplets)
+{
+  const LaplacianOperator laplacian(mesh, LaplacianWeights::Uniform);
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    double degree = 0.0;
+    for (const auto& [j, coefficient] : laplacian.Row(v, 1))
+    {
+      if (j != v)
+      {
+        triplets.emplace_back(offset + v, offset + j, -1.0);
+        degree += 1.0;
+      }
+    }
+    triplets.emplace_back(offset + v, offset + v, degree + 0.01);
+  }
+}
+
+TEST(SparseCholesky, FewColumnSolvesMatchTheBlasPathInParallel)
+{
+  if (!SparseCholesky::IsAvailable(SolverBackend::Cholmod))
+  {
+    GTEST_SKIP() << "built without CHOLMOD";
+  }
+  // One connected grid, and two disjoint ones (a forest of elimination trees).
+  const SurfaceMesh big = MakeGrid(90, 90, 1.0, Bumps);
+  const SurfaceMesh small = MakeGrid(25, 40, 1.0, Bumps);
+  for (bool forest : { false, true })
+  {
+    std::vector<Eigen::Triplet<double>> triplets;
+    AddShiftedGraphLaplacian(big, 0, triplets);
+    if (forest)
+    {
+      AddShiftedGraphLaplacian(small, big.GetNumberOfVertices(), triplets);
+    }
+    const int n = big.GetNumberOfVertices() + (forest ? small.GetNumberOfVertices() : 0);
+    Eigen::SparseMatrix<double> matrix(n, n);
+    matrix.setFromTriplets(triplets.begin(), triplets.end());
+    for (FillOrdering ordering : { FillOrdering::AMD, FillOrdering::METIS })
+    {
+      SparseCholesky factor;
+      ASSERT_EQ(factor.Factorize(matrix, SolverBackend::Cholmod, ordering), "");
+      if (std::thread::hardware_concurrency() > 1)
+      {
+        EXPECT_GT(factor.GetParallelShare(), 0.5) << "the tree should split into parallel parts";
+      }
+      std::srand(7);
+      const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(n, 6);
+      const Eigen::MatrixXd wide = factor.Solve(rhs); // more than four columns: CHOLMOD's BLAS path
+      ASSERT_LT((matrix * wide - rhs).norm() / rhs.norm(), 1e-12);
+      for (int columns = 1; columns <= 4; ++columns)
+      {
+        for (const ParallelFor& loop : { ParallelFor(SerialFor), ParallelFor(ThreadedFor) })
+        {
+          const Eigen::MatrixXd few = factor.Solve(rhs.leftCols(columns), loop);
+          EXPECT_LT((few - wide.leftCols(columns)).cwiseAbs().maxCoeff(),
+            1e-12 * wide.cwiseAbs().maxCoeff())
+            << columns << " columns, forest " << forest;
+        }
+      }
+    }
+  }
 }
 
 TEST(EditRegion, RejectsBadSelections)

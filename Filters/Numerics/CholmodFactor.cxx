@@ -1,0 +1,497 @@
+#include "CholmodFactor.h"
+
+#include <cholmod.h>
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <type_traits>
+#include <vector>
+
+namespace LaplacianEditing
+{
+namespace
+{
+cholmod_sparse ViewLowerTriangle(const Eigen::SparseMatrix<double>& matrix)
+{
+  cholmod_sparse view{};
+  view.nrow = static_cast<size_t>(matrix.rows());
+  view.ncol = static_cast<size_t>(matrix.cols());
+  view.nzmax = static_cast<size_t>(matrix.nonZeros());
+  view.p = const_cast<int*>(matrix.outerIndexPtr());
+  view.i = const_cast<int*>(matrix.innerIndexPtr());
+  view.x = const_cast<double*>(matrix.valuePtr());
+  view.stype = -1;
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;
+  view.packed = 1;
+  return view;
+}
+}
+
+struct CholmodFactor::Internals
+{
+  mutable cholmod_common Common;
+  cholmod_factor* Factor = nullptr;
+
+  // The supernodes' schedule for the few-column solves. Each part is a set of whole subtrees of
+  // the supernodal elimination tree, listed in increasing order; Top holds the supernodes above
+  // them. A part's forward updates to rows of Top go to its own spill rows (TopSlot), so parts
+  // never write the same memory; the backward pass only reads ancestors.
+  std::vector<std::vector<int>> Parts;
+  std::vector<int> Top;
+  std::vector<int> TopColumns;
+  std::vector<int> TopSlot;
+  // Where each supernode's sorted rows leave its own part (the rest are Top's; all of a Top
+  // supernode's rows are its own).
+  std::vector<int> DirectRowsEnd;
+  double ParallelShare = 0.0;
+
+  Internals() { cholmod_start(&this->Common); }
+  ~Internals()
+  {
+    cholmod_free_factor(&this->Factor, &this->Common);
+    cholmod_finish(&this->Common);
+  }
+
+  const int* Super() const { return static_cast<const int*>(this->Factor->super); }
+  const int* RowPointers() const { return static_cast<const int*>(this->Factor->pi); }
+  const int* ValuePointers() const { return static_cast<const int*>(this->Factor->px); }
+  const int* Rows() const { return static_cast<const int*>(this->Factor->s); }
+  const double* Values() const { return static_cast<const double*>(this->Factor->x); }
+
+  void Schedule(int parts);
+
+  template <int C>
+  void Forward(int s, double* y, double* spill) const;
+  template <int C>
+  void Backward(int s, double* y) const;
+  template <int C>
+  void SolveInPlace(double* y, const ParallelFor& loop) const;
+};
+
+void CholmodFactor::Internals::Schedule(int parts)
+{
+  const int supernodes = static_cast<int>(this->Factor->nsuper);
+  const int n = static_cast<int>(this->Factor->n);
+  const int* super = this->Super();
+  const int* pi = this->RowPointers();
+  const int* rows = this->Rows();
+
+  std::vector<int> supernodeOfColumn(n);
+  std::vector<int> parent(supernodes, -1);
+  std::vector<double> work(supernodes), subtreeWork(supernodes, 0.0);
+  std::vector<std::vector<int>> children(supernodes);
+  bool sorted = true;
+  for (int s = 0; s < supernodes; ++s)
+  {
+    std::fill(supernodeOfColumn.begin() + super[s], supernodeOfColumn.begin() + super[s + 1], s);
+  }
+  std::vector<int> roots;
+  double total = 0.0;
+  for (int s = 0; s < supernodes; ++s)
+  {
+    const double columns = super[s + 1] - super[s];
+    const double height = pi[s + 1] - pi[s];
+    work[s] = columns * height - columns * (columns - 1.0) / 2.0;
+    total += work[s];
+    subtreeWork[s] += work[s];
+    for (int k = pi[s] + 1; k < pi[s + 1]; ++k)
+    {
+      sorted = sorted && rows[k - 1] < rows[k];
+    }
+    if (height > columns)
+    {
+      // The first row below the diagonal block is the elimination tree's parent; parents come
+      // after their children, so subtree sums are complete when they are read.
+      parent[s] = supernodeOfColumn[rows[pi[s] + static_cast<int>(columns)]];
+      subtreeWork[parent[s]] += subtreeWork[s];
+      children[parent[s]].push_back(s);
+    }
+    else
+    {
+      roots.push_back(s);
+    }
+  }
+
+  // Split the heaviest subtree until the estimated time, serial top plus the heaviest part, stops
+  // improving; each split moves one separator to the top.
+  auto byWork = [&](int a, int b) { return subtreeWork[a] > subtreeWork[b]; };
+  auto assign = [&](std::vector<int>& subtrees, std::vector<int>* binOf) {
+    std::sort(subtrees.begin(), subtrees.end(), byWork);
+    std::vector<double> load(parts, 0.0);
+    for (int subtree : subtrees)
+    {
+      const int bin = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      load[bin] += subtreeWork[subtree];
+      if (binOf)
+      {
+        (*binOf)[subtree] = bin;
+      }
+    }
+    return *std::max_element(load.begin(), load.end());
+  };
+  std::vector<int> candidates = roots, top, bestCandidates = roots, bestTop;
+  double topWork = 0.0, bestCost = std::numeric_limits<double>::infinity();
+  while (sorted && parts > 1 && !candidates.empty() &&
+    candidates.size() <= static_cast<size_t>(64 * parts))
+  {
+    const double cost = topWork + assign(candidates, nullptr);
+    if (cost < bestCost)
+    {
+      bestCost = cost;
+      bestCandidates = candidates;
+      bestTop = top;
+    }
+    const int heaviest = candidates.front();
+    if (children[heaviest].empty())
+    {
+      break;
+    }
+    candidates.erase(candidates.begin());
+    candidates.insert(candidates.end(), children[heaviest].begin(), children[heaviest].end());
+    top.push_back(heaviest);
+    topWork += work[heaviest];
+  }
+
+  this->Parts.assign(std::max(parts, 1), {});
+  this->DirectRowsEnd.assign(supernodes, 0);
+  this->TopSlot.assign(n, -1);
+  this->TopColumns.clear();
+  this->Top.clear();
+  this->ParallelShare = 0.0;
+  if (!sorted || parts <= 1)
+  {
+    bestCandidates.clear();
+    bestTop.assign(supernodes, 0);
+    std::iota(bestTop.begin(), bestTop.end(), 0);
+  }
+  std::vector<int> binOf(supernodes, -1), subtreeRoot(supernodes, -1);
+  assign(bestCandidates, &binOf);
+  std::vector<char> isTop(supernodes, 0);
+  for (int s : bestTop)
+  {
+    isTop[s] = 1;
+  }
+  for (int s = supernodes - 1; s >= 0; --s)
+  {
+    if (isTop[s])
+    {
+      binOf[s] = -1;
+    }
+    else if (binOf[s] >= 0)
+    {
+      subtreeRoot[s] = s;
+    }
+    else
+    {
+      binOf[s] = binOf[parent[s]];
+      subtreeRoot[s] = subtreeRoot[parent[s]];
+    }
+  }
+  for (int s = 0; s < supernodes; ++s)
+  {
+    const int columns = super[s + 1] - super[s];
+    int end = pi[s + 1] - pi[s];
+    if (binOf[s] < 0)
+    {
+      this->Top.push_back(s);
+      for (int column = super[s]; column < super[s + 1]; ++column)
+      {
+        this->TopSlot[column] = static_cast<int>(this->TopColumns.size());
+        this->TopColumns.push_back(column);
+      }
+    }
+    else
+    {
+      // Rows are sorted, and the part's own rows are those up to its subtree root's last column.
+      const int lastOwnColumn = super[subtreeRoot[s] + 1] - 1;
+      end = columns;
+      while (end < pi[s + 1] - pi[s] && rows[pi[s] + end] <= lastOwnColumn)
+      {
+        ++end;
+      }
+      this->Parts[binOf[s]].push_back(s);
+      this->ParallelShare += work[s] / total;
+    }
+    this->DirectRowsEnd[s] = end;
+  }
+}
+
+namespace
+{
+// Up to four columns of a supernode at once, so that each row they update is read and written
+// once rather than once a column.
+constexpr int ColumnBlock = 4;
+
+// target_i -= sum_k L(i, k) x_k over rows [begin, end) of a block of B columns.
+template <int C, int B>
+void SubtractBlock(const double* const* columns, const double (&x)[ColumnBlock][C], const int* rows,
+  int begin, int end, double* target, const int* slot)
+{
+  for (int i = begin; i < end; ++i)
+  {
+    double* row = target + static_cast<size_t>(slot ? slot[rows[i]] : rows[i]) * C;
+    for (int c = 0; c < C; ++c)
+    {
+      double sum = 0.0;
+      for (int k = 0; k < B; ++k)
+      {
+        sum += columns[k][i] * x[k][c];
+      }
+      row[c] -= sum;
+    }
+  }
+}
+
+// sums_k -= sum_i L(i, k) y_i over rows [begin, end) of a block of B columns.
+template <int C, int B>
+void GatherBlock(const double* const* columns, const int* rows, int begin, int end,
+  const double* y, double (&sums)[ColumnBlock][C])
+{
+  for (int i = begin; i < end; ++i)
+  {
+    const double* row = y + static_cast<size_t>(rows[i]) * C;
+    for (int k = 0; k < B; ++k)
+    {
+      for (int c = 0; c < C; ++c)
+      {
+        sums[k][c] -= columns[k][i] * row[c];
+      }
+    }
+  }
+}
+
+template <int C, typename Function>
+void WithBlockWidth(int width, Function&& function)
+{
+  switch (width)
+  {
+    case 1: function(std::integral_constant<int, 1>()); break;
+    case 2: function(std::integral_constant<int, 2>()); break;
+    case 3: function(std::integral_constant<int, 3>()); break;
+    default: function(std::integral_constant<int, 4>()); break;
+  }
+}
+}
+
+template <int C>
+void CholmodFactor::Internals::Forward(int s, double* y, double* spill) const
+{
+  const int first = this->Super()[s];
+  const int width = this->Super()[s + 1] - first;
+  const int height = this->RowPointers()[s + 1] - this->RowPointers()[s];
+  const int* rows = this->Rows() + this->RowPointers()[s];
+  const double* values = this->Values() + this->ValuePointers()[s];
+  const int directEnd = this->DirectRowsEnd[s];
+  for (int j0 = 0; j0 < width; j0 += ColumnBlock)
+  {
+    const int block = std::min(ColumnBlock, width - j0);
+    const double* columns[ColumnBlock];
+    double x[ColumnBlock][C];
+    for (int k = 0; k < block; ++k)
+    {
+      const int j = j0 + k;
+      columns[k] = values + static_cast<size_t>(j) * height;
+      double* yj = y + static_cast<size_t>(first + j) * C;
+      for (int c = 0; c < C; ++c)
+      {
+        x[k][c] = yj[c] /= columns[k][j];
+      }
+      for (int i = j + 1; i < j0 + block; ++i)
+      {
+        for (int c = 0; c < C; ++c)
+        {
+          y[static_cast<size_t>(first + i) * C + c] -= columns[k][i] * x[k][c];
+        }
+      }
+    }
+    WithBlockWidth<C>(block, [&](auto b) {
+      SubtractBlock<C, b()>(columns, x, rows, j0 + block, directEnd, y, nullptr);
+      SubtractBlock<C, b()>(columns, x, rows, directEnd, height, spill, this->TopSlot.data());
+    });
+  }
+}
+
+template <int C>
+void CholmodFactor::Internals::Backward(int s, double* y) const
+{
+  const int first = this->Super()[s];
+  const int width = this->Super()[s + 1] - first;
+  const int height = this->RowPointers()[s + 1] - this->RowPointers()[s];
+  const int* rows = this->Rows() + this->RowPointers()[s];
+  const double* values = this->Values() + this->ValuePointers()[s];
+  for (int end = width; end > 0; end -= ColumnBlock)
+  {
+    const int j0 = std::max(0, end - ColumnBlock);
+    const int block = end - j0;
+    const double* columns[ColumnBlock];
+    double sums[ColumnBlock][C];
+    for (int k = 0; k < block; ++k)
+    {
+      columns[k] = values + static_cast<size_t>(j0 + k) * height;
+      for (int c = 0; c < C; ++c)
+      {
+        sums[k][c] = y[static_cast<size_t>(first + j0 + k) * C + c];
+      }
+    }
+    WithBlockWidth<C>(
+      block, [&](auto b) { GatherBlock<C, b()>(columns, rows, end, height, y, sums); });
+    for (int k = block - 1; k >= 0; --k)
+    {
+      double* yj = y + static_cast<size_t>(first + j0 + k) * C;
+      for (int c = 0; c < C; ++c)
+      {
+        for (int i = k + 1; i < block; ++i)
+        {
+          sums[k][c] -= columns[k][j0 + i] * y[static_cast<size_t>(first + j0 + i) * C + c];
+        }
+        yj[c] = sums[k][c] / columns[k][j0 + k];
+      }
+    }
+  }
+}
+
+template <int C>
+void CholmodFactor::Internals::SolveInPlace(double* y, const ParallelFor& loop) const
+{
+  const int parts = static_cast<int>(this->Parts.size());
+  const size_t spillSize = this->TopColumns.size() * C;
+  std::vector<double> spill(spillSize * parts, 0.0);
+  loop(0, parts, [&](int firstPart, int lastPart) {
+    for (int part = firstPart; part < lastPart; ++part)
+    {
+      for (int s : this->Parts[part])
+      {
+        this->Forward<C>(s, y, spill.data() + spillSize * part);
+      }
+    }
+  });
+  for (int part = 0; part < parts; ++part)
+  {
+    for (size_t k = 0; k < this->TopColumns.size(); ++k)
+    {
+      for (int c = 0; c < C; ++c)
+      {
+        y[static_cast<size_t>(this->TopColumns[k]) * C + c] += spill[spillSize * part + k * C + c];
+      }
+    }
+  }
+  for (int s : this->Top)
+  {
+    this->Forward<C>(s, y, nullptr);
+  }
+  for (auto s = this->Top.rbegin(); s != this->Top.rend(); ++s)
+  {
+    this->Backward<C>(*s, y);
+  }
+  loop(0, parts, [&](int firstPart, int lastPart) {
+    for (int part = firstPart; part < lastPart; ++part)
+    {
+      for (auto s = this->Parts[part].rbegin(); s != this->Parts[part].rend(); ++s)
+      {
+        this->Backward<C>(*s, y);
+      }
+    }
+  });
+}
+
+CholmodFactor::CholmodFactor()
+  : Internal(new Internals)
+{
+  cholmod_common& common = this->Internal->Common;
+  common.print = 0; // failures reach the caller as messages, not as CHOLMOD's own printing
+  common.supernodal = CHOLMOD_SUPERNODAL;
+  common.nmethods = 1;
+  common.postorder = 1;
+}
+
+CholmodFactor::~CholmodFactor() = default;
+
+std::string CholmodFactor::Analyze(
+  const Eigen::SparseMatrix<double>& matrix, FillOrdering ordering, int parts)
+{
+  cholmod_common& common = this->Internal->Common;
+  common.method[0].ordering = ordering == FillOrdering::AMD ? CHOLMOD_AMD
+    : ordering == FillOrdering::METIS                       ? CHOLMOD_METIS
+                                                            : CHOLMOD_NESDIS;
+  cholmod_free_factor(&this->Internal->Factor, &common);
+  cholmod_sparse view = ViewLowerTriangle(matrix);
+  this->Internal->Factor = cholmod_analyze(&view, &common);
+  if (!this->Internal->Factor || !this->Internal->Factor->is_super)
+  {
+    return "the symbolic analysis failed (CHOLMOD status " + std::to_string(common.status) + ")";
+  }
+  this->Internal->Schedule(parts);
+  return {};
+}
+
+double CholmodFactor::GetPredictedBytes() const
+{
+  return this->Internal->Common.lnz * (sizeof(double) + sizeof(int));
+}
+
+bool CholmodFactor::Factorize(const Eigen::SparseMatrix<double>& matrix)
+{
+  cholmod_sparse view = ViewLowerTriangle(matrix);
+  cholmod_factor* factor = this->Internal->Factor;
+  cholmod_factorize(&view, factor, &this->Internal->Common);
+  return this->Internal->Common.status == CHOLMOD_OK && factor->minor == factor->n;
+}
+
+Eigen::MatrixXd CholmodFactor::Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const
+{
+  const cholmod_factor* factor = this->Internal->Factor;
+  const int n = static_cast<int>(rhs.rows());
+  const int columns = static_cast<int>(rhs.cols());
+  Eigen::MatrixXd solution(n, columns);
+  if (columns > 4)
+  {
+    cholmod_dense view{};
+    view.nrow = view.d = static_cast<size_t>(n);
+    view.ncol = static_cast<size_t>(columns);
+    view.nzmax = view.nrow * view.ncol;
+    view.x = const_cast<double*>(rhs.data());
+    view.xtype = CHOLMOD_REAL;
+    view.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* x = cholmod_solve(
+      CHOLMOD_A, const_cast<cholmod_factor*>(factor), &view, &this->Internal->Common);
+    std::copy_n(static_cast<const double*>(x->x), view.nzmax, solution.data());
+    cholmod_free_dense(&x, &this->Internal->Common);
+    return solution;
+  }
+  // Permuted, with each row's columns side by side.
+  const int* permutation = static_cast<const int*>(factor->Perm);
+  std::vector<double> y(static_cast<size_t>(n) * columns);
+  for (int k = 0; k < n; ++k)
+  {
+    for (int c = 0; c < columns; ++c)
+    {
+      y[static_cast<size_t>(k) * columns + c] = rhs(permutation[k], c);
+    }
+  }
+  switch (columns)
+  {
+    case 1: this->Internal->SolveInPlace<1>(y.data(), loop); break;
+    case 2: this->Internal->SolveInPlace<2>(y.data(), loop); break;
+    case 3: this->Internal->SolveInPlace<3>(y.data(), loop); break;
+    case 4: this->Internal->SolveInPlace<4>(y.data(), loop); break;
+    default: break;
+  }
+  for (int k = 0; k < n; ++k)
+  {
+    for (int c = 0; c < columns; ++c)
+    {
+      solution(permutation[k], c) = y[static_cast<size_t>(k) * columns + c];
+    }
+  }
+  return solution;
+}
+
+double CholmodFactor::GetParallelShare() const
+{
+  return this->Internal->ParallelShare;
+}
+}
