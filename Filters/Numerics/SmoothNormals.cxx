@@ -118,7 +118,9 @@ void SmoothNormals::Build(
 
 Positions SmoothNormals::Compute(const Positions& roiPositions, const ParallelFor& loop) const
 {
-  Positions current = this->ExtendedRest;
+  // Rows are gathered through index lists: row-major keeps each row in one cache line.
+  using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  Rows3 current = this->ExtendedRest;
   for (Eigen::Index e = 0; e < current.rows(); ++e)
   {
     if (this->ExtendedRoiRow[e] >= 0)
@@ -128,7 +130,7 @@ Positions SmoothNormals::Compute(const Positions& roiPositions, const ParallelFo
   }
   // Triangle normals (twice the area, which the normalizations cancel), then their sums at the
   // support vertices, then the two weighted averages: every loop is over independent rows.
-  Positions triangleNormals(static_cast<Eigen::Index>(this->Triangles.size()), 3);
+  Rows3 triangleNormals(static_cast<Eigen::Index>(this->Triangles.size()), 3);
   loop(0, static_cast<int>(this->Triangles.size()), [&](int first, int last) {
     for (int t = first; t < last; ++t)
     {
@@ -137,7 +139,7 @@ Positions SmoothNormals::Compute(const Positions& roiPositions, const ParallelFo
         (current.row(tri[1]) - current.row(tri[0])).cross(current.row(tri[2]) - current.row(tri[0]));
     }
   });
-  Positions areaNormals(this->NumberOfSupportVertices, 3);
+  Rows3 areaNormals(this->NumberOfSupportVertices, 3);
   loop(0, this->NumberOfSupportVertices, [&](int first, int last) {
     for (int s = first; s < last; ++s)
     {
@@ -150,8 +152,8 @@ Positions SmoothNormals::Compute(const Positions& roiPositions, const ParallelFo
     }
   });
   auto average = [&](const Eigen::SparseMatrix<double, Eigen::RowMajor>& weights,
-                   const Positions& values) {
-    Positions result(weights.rows(), 3);
+                   const Rows3& values) {
+    Rows3 result(weights.rows(), 3);
     loop(0, static_cast<int>(weights.rows()), [&](int first, int last) {
       for (int row = first; row < last; ++row)
       {
