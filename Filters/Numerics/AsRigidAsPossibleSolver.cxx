@@ -177,7 +177,7 @@ std::string AsRigidAsPossibleSolver::Build(
     {
       diagonal += this->Weights[k];
       const int other = this->UnknownOfPatch[this->Neighbors[k]];
-      if (other >= 0 && other < u)
+      if (other > u)
       {
         triplets.emplace_back(u, other, -this->Weights[k]);
       }

@@ -3,16 +3,23 @@
 #include <cholmod.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <type_traits>
 #include <vector>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace LaplacianEditing
 {
 namespace
 {
-cholmod_sparse ViewLowerTriangle(const Eigen::SparseMatrix<double>& matrix)
+cholmod_sparse ViewUpperTriangle(const Eigen::SparseMatrix<double>& matrix)
 {
   cholmod_sparse view{};
   view.nrow = static_cast<size_t>(matrix.rows());
@@ -21,13 +28,135 @@ cholmod_sparse ViewLowerTriangle(const Eigen::SparseMatrix<double>& matrix)
   view.p = const_cast<int*>(matrix.outerIndexPtr());
   view.i = const_cast<int*>(matrix.innerIndexPtr());
   view.x = const_cast<double*>(matrix.valuePtr());
-  view.stype = -1;
+  view.stype = 1; // the upper triangle: CHOLMOD then permutes it with one transpose, not two
   view.itype = CHOLMOD_INT;
   view.xtype = CHOLMOD_REAL;
   view.dtype = CHOLMOD_DOUBLE;
   view.sorted = 1;
   view.packed = 1;
   return view;
+}
+
+// Orders the graph of the blocks, one node per group of `blockSize` unknowns (coupled where the
+// matrix couples any of their unknowns), and expands the order to the unknowns. A group's
+// unknowns stay together, and the graph ordered is blockSize^2 times smaller.
+std::vector<int> OrderBlocks(
+  const Eigen::SparseMatrix<double>& matrix, int blockSize, int method, cholmod_common& common)
+{
+  const int blocks = static_cast<int>(matrix.rows()) / blockSize;
+  std::vector<int> columnStart(1, 0);
+  std::vector<int> rows;
+  std::vector<int> seenIn(blocks, -1);
+  for (int b = 0; b < blocks; ++b)
+  {
+    for (int j = b * blockSize; j < (b + 1) * blockSize; ++j)
+    {
+      for (int p = matrix.outerIndexPtr()[j]; p < matrix.outerIndexPtr()[j + 1]; ++p)
+      {
+        const int a = matrix.innerIndexPtr()[p] / blockSize;
+        if (seenIn[a] != b)
+        {
+          seenIn[a] = b;
+          rows.push_back(a);
+        }
+      }
+    }
+    std::sort(rows.begin() + columnStart.back(), rows.end());
+    columnStart.push_back(static_cast<int>(rows.size()));
+  }
+  cholmod_sparse pattern{};
+  pattern.nrow = pattern.ncol = static_cast<size_t>(blocks);
+  pattern.nzmax = rows.size();
+  pattern.p = columnStart.data();
+  pattern.i = rows.data();
+  pattern.stype = 1;
+  pattern.itype = CHOLMOD_INT;
+  pattern.xtype = CHOLMOD_PATTERN;
+  pattern.dtype = CHOLMOD_DOUBLE;
+  pattern.sorted = 1;
+  pattern.packed = 1;
+  std::vector<int> order(blocks);
+  bool ordered = false;
+  if (method == CHOLMOD_AMD)
+  {
+    ordered = cholmod_amd(&pattern, nullptr, 0, order.data(), &common);
+  }
+  else if (method == CHOLMOD_METIS)
+  {
+    ordered = cholmod_metis(&pattern, nullptr, 0, 1, order.data(), &common);
+  }
+  else
+  {
+    std::vector<int> parents(blocks), members(blocks);
+    ordered = cholmod_nested_dissection(
+                &pattern, nullptr, 0, order.data(), parents.data(), members.data(), &common) >= 0;
+  }
+  if (!ordered)
+  {
+    return {};
+  }
+  std::vector<int> expanded(matrix.rows());
+  for (int k = 0; k < blocks; ++k)
+  {
+    for (int c = 0; c < blockSize; ++c)
+    {
+      expanded[k * blockSize + c] = order[k] * blockSize + c;
+    }
+  }
+  return expanded;
+}
+
+#ifdef __linux__
+// A factor is written once and streamed by every solve: 300 MB for the implicit system of a
+// 30k-vertex region. In 2 MB pages its first touch takes 512 times fewer page faults and its
+// solves fewer TLB misses. Linux grants them to regions marked MADV_HUGEPAGE (Debian's default
+// "madvise" mode); small blocks stay with malloc.
+void* AllocateInHugePages(size_t bytes)
+{
+  constexpr size_t hugePage = size_t(2) << 20;
+  if (bytes < 4 * hugePage)
+  {
+    return std::malloc(bytes);
+  }
+  void* memory = nullptr;
+  if (posix_memalign(&memory, hugePage, bytes) != 0)
+  {
+    return nullptr;
+  }
+  madvise(memory, bytes, MADV_HUGEPAGE);
+  return memory;
+}
+
+void* ClearedInHugePages(size_t count, size_t size)
+{
+  if (size != 0 && count > std::numeric_limits<size_t>::max() / size)
+  {
+    return nullptr;
+  }
+  void* memory = AllocateInHugePages(count * size);
+  if (memory)
+  {
+    std::memset(memory, 0, count * size);
+  }
+  return memory;
+}
+#endif
+
+// SuiteSparse's allocator is process-wide; it is replaced only while it is still the C
+// library's, so an application's own allocator is kept. Blocks stay free()-compatible.
+void UseHugePagesForLargeBlocks()
+{
+#ifdef __linux__
+  static std::once_flag once;
+  std::call_once(once, [] {
+    if (SuiteSparse_config.malloc_func == std::malloc &&
+      SuiteSparse_config.calloc_func == std::calloc && SuiteSparse_config.free_func == std::free)
+    {
+      SuiteSparse_config.malloc_func = AllocateInHugePages;
+      SuiteSparse_config.calloc_func = ClearedInHugePages;
+    }
+  });
+#endif
 }
 }
 
@@ -401,6 +530,7 @@ void CholmodFactor::Internals::SolveInPlace(double* y, const ParallelFor& loop) 
 CholmodFactor::CholmodFactor()
   : Internal(new Internals)
 {
+  UseHugePagesForLargeBlocks();
   cholmod_common& common = this->Internal->Common;
   common.print = 0; // failures reach the caller as messages, not as CHOLMOD's own printing
   common.supernodal = CHOLMOD_SUPERNODAL;
@@ -411,15 +541,31 @@ CholmodFactor::CholmodFactor()
 CholmodFactor::~CholmodFactor() = default;
 
 std::string CholmodFactor::Analyze(
-  const Eigen::SparseMatrix<double>& matrix, FillOrdering ordering, int parts)
+  const Eigen::SparseMatrix<double>& matrix, FillOrdering ordering, int parts, int blockSize)
 {
   cholmod_common& common = this->Internal->Common;
-  common.method[0].ordering = ordering == FillOrdering::AMD ? CHOLMOD_AMD
-    : ordering == FillOrdering::METIS                       ? CHOLMOD_METIS
-                                                            : CHOLMOD_NESDIS;
+  const int method = ordering == FillOrdering::AMD ? CHOLMOD_AMD
+    : ordering == FillOrdering::METIS              ? CHOLMOD_METIS
+                                                   : CHOLMOD_NESDIS;
   cholmod_free_factor(&this->Internal->Factor, &common);
-  cholmod_sparse view = ViewLowerTriangle(matrix);
-  this->Internal->Factor = cholmod_analyze(&view, &common);
+  cholmod_sparse view = ViewUpperTriangle(matrix);
+  if (blockSize > 1 && matrix.rows() % blockSize == 0)
+  {
+    const std::vector<int> permutation = OrderBlocks(matrix, blockSize, method, common);
+    if (permutation.empty())
+    {
+      return "the fill-reducing ordering failed (CHOLMOD status " +
+        std::to_string(common.status) + ")";
+    }
+    common.method[0].ordering = CHOLMOD_GIVEN;
+    this->Internal->Factor =
+      cholmod_analyze_p(&view, const_cast<int*>(permutation.data()), nullptr, 0, &common);
+  }
+  else
+  {
+    common.method[0].ordering = method;
+    this->Internal->Factor = cholmod_analyze(&view, &common);
+  }
   if (!this->Internal->Factor || !this->Internal->Factor->is_super)
   {
     return "the symbolic analysis failed (CHOLMOD status " + std::to_string(common.status) + ")";
@@ -435,7 +581,7 @@ double CholmodFactor::GetPredictedBytes() const
 
 bool CholmodFactor::Factorize(const Eigen::SparseMatrix<double>& matrix)
 {
-  cholmod_sparse view = ViewLowerTriangle(matrix);
+  cholmod_sparse view = ViewUpperTriangle(matrix);
   cholmod_factor* factor = this->Internal->Factor;
   cholmod_factorize(&view, factor, &this->Internal->Common);
   return this->Internal->Common.status == CHOLMOD_OK && factor->minor == factor->n;

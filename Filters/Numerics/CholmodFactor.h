@@ -28,9 +28,12 @@ public:
   CholmodFactor(const CholmodFactor&) = delete;
   CholmodFactor& operator=(const CholmodFactor&) = delete;
 
-  /// Orders and analyses the pattern of a symmetric matrix (its lower triangle is read).
-  /// `parts` is how many subtrees the few-column solves may run at once.
-  std::string Analyze(const Eigen::SparseMatrix<double>& matrix, FillOrdering ordering, int parts);
+  /// Orders and analyses the pattern of a symmetric matrix (its upper triangle is read).
+  /// `parts` is how many subtrees the few-column solves may run at once. With `blockSize` > 1,
+  /// the unknowns come in groups of that many sharing one pattern, and the ordering works on
+  /// the groups.
+  std::string Analyze(
+    const Eigen::SparseMatrix<double>& matrix, FillOrdering ordering, int parts, int blockSize = 1);
   /// Bytes of the factor the analysis predicts: values and row indices.
   double GetPredictedBytes() const;
   /// Factors the analysed matrix; false if it is not positive definite.

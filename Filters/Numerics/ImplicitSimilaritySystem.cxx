@@ -48,112 +48,113 @@ Eigen::Matrix<double, 3, 4> ApplyToDelta(const Eigen::Vector3d& delta)
 // The residual rows of one ROI vertex, dense over the ROI vertices they touch.
 struct VertexRows
 {
-  std::vector<int> Columns; // ROI rows, sorted
-  Eigen::MatrixXd Jacobian; // equations x 3 Columns.size()
+  const std::vector<int>* Columns = nullptr; // ROI rows, sorted
+  Eigen::MatrixXd Jacobian;                  // equations x 3 Columns->size()
   Eigen::VectorXd Known;
 
-  void Start(int equations)
+  void Start(const std::vector<int>& columns, int equations)
   {
-    std::sort(this->Columns.begin(), this->Columns.end());
-    this->Columns.erase(std::unique(this->Columns.begin(), this->Columns.end()), this->Columns.end());
-    this->Jacobian.setZero(equations, 3 * static_cast<Eigen::Index>(this->Columns.size()));
+    this->Columns = &columns;
+    this->Jacobian.setZero(equations, 3 * static_cast<Eigen::Index>(columns.size()));
     this->Known.setZero(equations);
   }
 
   int Column(int roiRow) const
   {
-    return static_cast<int>(
-      std::lower_bound(this->Columns.begin(), this->Columns.end(), roiRow) - this->Columns.begin());
+    return static_cast<int>(std::lower_bound(this->Columns->begin(), this->Columns->end(), roiRow) -
+      this->Columns->begin());
   }
 };
 
-// A^T A and A^T k of a system given vertex by vertex, in 3 x 3 blocks between ROI vertices.
+// A^T A (upper triangle) and A^T k of a system given vertex by vertex, in 3 x 3 blocks between
+// ROI vertices. The block pattern is known before any value: vertices a and b are coupled when
+// some vertex's residual rows act on both.
 class BlockNormalEquations
 {
 public:
-  explicit BlockNormalEquations(int vertices)
-    : Blocks(vertices)
-    , RightHandSide(Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(vertices)))
+  explicit BlockNormalEquations(const std::vector<std::vector<int>>& residualColumns)
+    : RightHandSide(Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(residualColumns.size())))
   {
+    // Block column b holds the blocks (a, b) with a <= b, sorted.
+    std::vector<std::vector<int>> coupled(residualColumns.size());
+    for (const std::vector<int>& columns : residualColumns)
+    {
+      for (std::size_t b = 0; b < columns.size(); ++b)
+      {
+        coupled[columns[b]].insert(coupled[columns[b]].end(), columns.begin(), columns.begin() + b + 1);
+      }
+    }
+    this->ColumnStart.assign(1, 0);
+    for (std::vector<int>& column : coupled)
+    {
+      std::sort(column.begin(), column.end());
+      column.erase(std::unique(column.begin(), column.end()), column.end());
+      this->BlockRows.insert(this->BlockRows.end(), column.begin(), column.end());
+      this->ColumnStart.push_back(static_cast<int>(this->BlockRows.size()));
+    }
+    this->Blocks.assign(this->BlockRows.size(), Eigen::Matrix3d::Zero());
   }
 
-  void Add(const VertexRows& rows)
+  /// Adds J^T J and J^T k of one vertex's rows, J acting on the ROI vertices `columns`.
+  void Add(const std::vector<int>& columns, const Eigen::MatrixXd& product,
+    const Eigen::VectorXd& projected)
   {
-    const Eigen::MatrixXd product = rows.Jacobian.transpose() * rows.Jacobian;
-    const Eigen::VectorXd projected = rows.Jacobian.transpose() * rows.Known;
-    const int size = static_cast<int>(rows.Columns.size());
-    for (int a = 0; a < size; ++a)
+    const int size = static_cast<int>(columns.size());
+    for (int b = 0; b < size; ++b)
     {
-      this->RightHandSide.segment<3>(3 * rows.Columns[a]) += projected.segment<3>(3 * a);
-      for (int b = 0; b < size; ++b)
+      this->RightHandSide.segment<3>(3 * columns[b]) += projected.segment<3>(3 * b);
+      auto block = this->BlockRows.begin() + this->ColumnStart[columns[b]];
+      const auto columnEnd = this->BlockRows.begin() + this->ColumnStart[columns[b] + 1];
+      for (int a = 0; a <= b; ++a)
       {
-        this->Block(rows.Columns[a], rows.Columns[b]) += product.block<3, 3>(3 * a, 3 * b);
+        block = std::lower_bound(block, columnEnd, columns[a]);
+        this->Blocks[block - this->BlockRows.begin()] += product.block<3, 3>(3 * a, 3 * b);
       }
     }
   }
 
-  /// The symmetric matrix, with `diagonal[k]` added to the three diagonal entries of vertex k.
-  Eigen::SparseMatrix<double> Matrix(const Eigen::VectorXd& diagonal)
+  /// The upper triangle of the symmetric matrix, with `diagonal[k]` added to the three diagonal
+  /// entries of vertex k.
+  Eigen::SparseMatrix<double> UpperTriangle(const Eigen::VectorXd& diagonal) const
   {
-    const Eigen::Index size = 3 * static_cast<Eigen::Index>(this->Blocks.size());
-    Eigen::Index nonZeros = 0;
-    for (auto& row : this->Blocks)
-    {
-      std::sort(row.begin(), row.end(),
-        [](const BlockEntry& x, const BlockEntry& y) { return x.first < y.first; });
-      nonZeros += 9 * static_cast<Eigen::Index>(row.size());
-    }
-    Eigen::SparseMatrix<double> matrix(size, size);
-    matrix.resizeNonZeros(nonZeros);
+    const int vertices = static_cast<int>(this->ColumnStart.size()) - 1;
+    Eigen::SparseMatrix<double> matrix(3 * vertices, 3 * vertices);
+    matrix.resizeNonZeros(9 * static_cast<Eigen::Index>(this->BlockRows.size()) - 3 * vertices);
     Eigen::Index entry = 0;
-    // Column 3a + c holds block (b, a) = block (a, b)^T for every b of row a, in order.
-    for (std::size_t a = 0; a < this->Blocks.size(); ++a)
+    // Column 3b + c holds rows 3a + r <= 3b + c.
+    for (int b = 0; b < vertices; ++b)
     {
       for (int c = 0; c < 3; ++c)
       {
-        matrix.outerIndexPtr()[3 * a + c] = static_cast<int>(entry);
-        for (const BlockEntry& block : this->Blocks[a])
+        matrix.outerIndexPtr()[3 * b + c] = static_cast<int>(entry);
+        for (int k = this->ColumnStart[b]; k < this->ColumnStart[b + 1]; ++k)
         {
-          for (int r = 0; r < 3; ++r)
+          const int a = this->BlockRows[k];
+          for (int r = 0; r < (a == b ? c + 1 : 3); ++r)
           {
-            const bool onDiagonal = block.first == static_cast<int>(a) && r == c;
-            matrix.innerIndexPtr()[entry] = 3 * block.first + r;
-            matrix.valuePtr()[entry++] = block.second(c, r) + (onDiagonal ? diagonal[a] : 0.0);
+            matrix.innerIndexPtr()[entry] = 3 * a + r;
+            matrix.valuePtr()[entry++] = this->Blocks[k](r, c) + (a == b && r == c ? diagonal[b] : 0.0);
           }
         }
       }
     }
-    matrix.outerIndexPtr()[size] = static_cast<int>(entry);
+    matrix.outerIndexPtr()[3 * vertices] = static_cast<int>(entry);
     return matrix;
   }
 
   const Eigen::VectorXd& GetRightHandSide() const { return this->RightHandSide; }
 
 private:
-  using BlockEntry = std::pair<int, Eigen::Matrix3d>;
-
-  Eigen::Matrix3d& Block(int row, int column)
-  {
-    auto& entries = this->Blocks[row];
-    for (auto& entry : entries)
-    {
-      if (entry.first == column)
-      {
-        return entry.second;
-      }
-    }
-    entries.emplace_back(column, Eigen::Matrix3d::Zero());
-    return entries.back().second;
-  }
-
-  std::vector<std::vector<BlockEntry>> Blocks;
+  std::vector<int> ColumnStart;
+  std::vector<int> BlockRows;
+  std::vector<Eigen::Matrix3d> Blocks;
   Eigen::VectorXd RightHandSide;
 };
 }
 
 std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
   const DeformationSystem& plain, const DeformationOptions& options,
-  const ImplicitFormulation& formulation)
+  const ImplicitFormulation& formulation, const ParallelFor& loop)
 {
   const LaplacianOperator edgeWeights(mesh, options.Weights);
   const int n = region.GetNumberOfVertices();
@@ -185,88 +186,76 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
   this->Fits.resize(n);
   this->FitOffsets.resize(n);
+  loop(0, n, [&](int first, int last) {
+    for (int row = first; row < last; ++row)
+    {
+      this->FitRing(row, formulation.AllowScaling);
+    }
+  });
 
   // The residual rows: per vertex (the paper's, Eq. 12) or per one-ring edge. All rows of ROI
   // vertex `row` act on its ring (and, in the paper's form, on its operator row), so each
   // vertex contributes a small dense block J^T J to the normal matrix, accumulated directly:
   // forming A and A^T A as sparse products took half the setup and most of its memory.
   // Each row is sum_c a_c v'_c - T_i(V') e = k with T_i(V') e = G(e) (Fits ring + offset).
-  BlockNormalEquations normal(n);
-  VertexRows rows;
   const auto& laplacian = plain.GetRegionOperator();
-  const Positions& fixedPart = plain.GetFixedPart();
-  auto addTransformTerm = [&](int equation, int row, const Eigen::Vector3d& e, double scale) {
-    const int begin = this->RingOffsets[row];
-    const int size = this->RingOffsets[row + 1] - begin;
-    const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
-    const Eigen::MatrixXd transform = apply * this->Fits[row];
-    rows.Known.segment<3>(equation) += scale * apply * this->FitOffsets[row];
-    for (int q = 0; q < size; ++q)
-    {
-      const int member = this->RingRoiRows[begin + q];
-      const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
-      if (member < 0)
-      {
-        rows.Known.segment<3>(equation) += block * this->RingRest.row(begin + q).transpose();
-        continue;
-      }
-      rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)) -= block;
-    }
-  };
+  std::vector<std::vector<int>> residualColumns(n);
   for (int row = 0; row < n; ++row)
   {
-    const int begin = this->RingOffsets[row];
-    const int size = this->RingOffsets[row + 1] - begin;
-    // Centre on the vertex for conditioning; the translation absorbs the shift.
-    Eigen::MatrixXd fitMatrix(3 * size, 7);
-    for (int q = 0; q < size; ++q)
+    std::vector<int>& columns = residualColumns[row];
+    for (int k = this->RingOffsets[row]; k < this->RingOffsets[row + 1]; ++k)
     {
-      fitMatrix.middleRows<3>(3 * q) =
-        FitBlock(this->RingRest.row(begin + q) - this->RingRest.row(begin));
-    }
-    this->Fits[row].setZero(4, 3 * size);
-    this->FitOffsets[row].setZero();
-    if (formulation.AllowScaling)
-    {
-      this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
-    }
-    else
-    {
-      // s = 1: fit (h, t) to what the rest ring, unscaled, leaves over.
-      const Eigen::MatrixXd fit =
-        fitMatrix.rightCols<6>().completeOrthogonalDecomposition().pseudoInverse().topRows(3);
-      this->Fits[row].bottomRows<3>() = fit;
-      this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
-    }
-
-    rows.Columns.clear();
-    for (int q = 0; q < size; ++q)
-    {
-      if (this->RingRoiRows[begin + q] >= 0)
+      if (this->RingRoiRows[k] >= 0)
       {
-        rows.Columns.push_back(this->RingRoiRows[begin + q]);
+        columns.push_back(this->RingRoiRows[k]);
       }
     }
     if (!formulation.PerEdge)
     {
-      // D(V')_i - T_i(V') delta_i = -fixed part.
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
       {
-        rows.Columns.push_back(static_cast<int>(it.col()));
+        columns.push_back(static_cast<int>(it.col()));
       }
-      rows.Start(3);
+    }
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+  }
+
+  const Positions& fixedPart = plain.GetFixedPart();
+  auto fillRows = [&](int row, VertexRows& rows) {
+    const int begin = this->RingOffsets[row];
+    const int size = this->RingOffsets[row + 1] - begin;
+    auto addTransformTerm = [&](int equation, const Eigen::Vector3d& e, double scale) {
+      const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
+      const Eigen::MatrixXd transform = apply * this->Fits[row];
+      rows.Known.segment<3>(equation) += scale * apply * this->FitOffsets[row];
+      for (int q = 0; q < size; ++q)
+      {
+        const int member = this->RingRoiRows[begin + q];
+        const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
+        if (member < 0)
+        {
+          rows.Known.segment<3>(equation) += block * this->RingRest.row(begin + q).transpose();
+          continue;
+        }
+        rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)) -= block;
+      }
+    };
+    if (!formulation.PerEdge)
+    {
+      // D(V')_i - T_i(V') delta_i = -fixed part.
+      rows.Start(residualColumns[row], 3);
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
       {
         rows.Jacobian.block<3, 3>(0, 3 * rows.Column(static_cast<int>(it.col()))).diagonal().array() +=
           it.value();
       }
       rows.Known.head<3>() -= fixedPart.row(row).transpose();
-      addTransformTerm(0, row, this->RestDelta.row(row).transpose(), 1.0);
-      normal.Add(rows);
-      continue;
+      addTransformTerm(0, this->RestDelta.row(row).transpose(), 1.0);
+      return;
     }
     // sqrt(w_ij) ((v'_i - v'_j) - T_i(V') (v_i - v_j)) = 0, with the row's weights.
-    rows.Start(3 * (size - 1));
+    rows.Start(residualColumns[row], 3 * (size - 1));
     const std::vector<double> weights = edgeWeights.EdgeWeights(region.Vertices[row]);
     double total = 0.0;
     for (double w : weights)
@@ -287,15 +276,37 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
       {
         rows.Known.segment<3>(equation) += scale * this->RingRest.row(begin + q).transpose();
       }
-      addTransformTerm(equation, row,
-        (this->RingRest.row(begin) - this->RingRest.row(begin + q)).transpose(), scale);
+      addTransformTerm(
+        equation, (this->RingRest.row(begin) - this->RingRest.row(begin + q)).transpose(), scale);
     }
-    normal.Add(rows);
+  };
+
+  // The vertices' products in parallel, a batch at a time; summing them is serial.
+  BlockNormalEquations normal(residualColumns);
+  constexpr int batch = 2048;
+  std::vector<Eigen::MatrixXd> products(std::min(n, batch));
+  std::vector<Eigen::VectorXd> projections(products.size());
+  for (int batchBegin = 0; batchBegin < n; batchBegin += batch)
+  {
+    const int batchEnd = std::min(n, batchBegin + batch);
+    loop(batchBegin, batchEnd, [&](int first, int last) {
+      VertexRows rows;
+      for (int row = first; row < last; ++row)
+      {
+        fillRows(row, rows);
+        products[row - batchBegin].noalias() = rows.Jacobian.transpose() * rows.Jacobian;
+        projections[row - batchBegin].noalias() = rows.Jacobian.transpose() * rows.Known;
+      }
+    });
+    for (int row = batchBegin; row < batchEnd; ++row)
+    {
+      normal.Add(residualColumns[row], products[row - batchBegin], projections[row - batchBegin]);
+    }
   }
-  const Eigen::SparseMatrix<double> normalMatrix = normal.Matrix(plain.GetSquaredWeights());
+  const Eigen::SparseMatrix<double> normalMatrix = normal.UpperTriangle(plain.GetSquaredWeights());
   this->KnownRightHandSide = normal.GetRightHandSide();
-  const std::string error = this->Factor.Factorize(
-    normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
+  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
+    options.MaximumFactorBytes, /*blockSize=*/3);
   if (!error.empty())
   {
     return error;
@@ -329,6 +340,31 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     this->GroupResponses[g] = solution.middleCols<12>(1 + 12 * g);
   }
   return {};
+}
+
+void ImplicitSimilaritySystem::FitRing(int row, bool allowScaling)
+{
+  const int begin = this->RingOffsets[row];
+  const int size = this->RingOffsets[row + 1] - begin;
+  // Centre on the vertex for conditioning; the translation absorbs the shift.
+  Eigen::MatrixXd fitMatrix(3 * size, 7);
+  for (int q = 0; q < size; ++q)
+  {
+    fitMatrix.middleRows<3>(3 * q) =
+      FitBlock(this->RingRest.row(begin + q) - this->RingRest.row(begin));
+  }
+  this->Fits[row].setZero(4, 3 * size);
+  this->FitOffsets[row].setZero();
+  if (allowScaling)
+  {
+    this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
+    return;
+  }
+  // s = 1: fit (h, t) to what the rest ring, unscaled, leaves over.
+  const Eigen::MatrixXd fit =
+    fitMatrix.rightCols<6>().completeOrthogonalDecomposition().pseudoInverse().topRows(3);
+  this->Fits[row].bottomRows<3>() = fit;
+  this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
 }
 
 Positions ImplicitSimilaritySystem::Solve(

@@ -41,7 +41,8 @@ public:
   /// the differential operator, the fixed part and the constraint weights).
   std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
     const DeformationSystem& plain, const DeformationOptions& options,
-    const ImplicitFormulation& formulation = ImplicitFormulation());
+    const ImplicitFormulation& formulation = ImplicitFormulation(),
+    const ParallelFor& loop = SerialFor);
 
   /// The ROI positions minimizing the energy for the given handle maps (precomputed responses).
   Positions Solve(
@@ -58,6 +59,9 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
+  // Fits the transform of ROI vertex `row` to its rest one-ring (Fits and FitOffsets).
+  void FitRing(int row, bool allowScaling);
+
   // Gathers the one-ring positions of ROI vertex `row` (itself first) into a 3m vector.
   Eigen::VectorXd Ring(int row, const Positions& roiPositions) const;
 

@@ -207,7 +207,7 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
     ++this->NumberOfFactorizationAttempts;
     const std::string error = implicit->Build(
-      *this->Mesh, this->Region, this->System, this->SystemBuiltFrom, rotation.Formulation);
+      *this->Mesh, this->Region, this->System, this->SystemBuiltFrom, rotation.Formulation, this->Loop);
     if (!error.empty())
     {
       return error;

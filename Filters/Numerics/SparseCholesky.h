@@ -24,7 +24,7 @@ enum class SolverBackend
 /// Fill-reducing orderings (CHOLMOD only; SimplicialLDLT always uses AMD).
 enum class FillOrdering
 {
-  Automatic,       // AMD below 300k unknowns, METIS from there (measured: see the README)
+  Automatic,       // AMD below 300k unknowns, METIS from there or for block systems (README)
   AMD,             // approximate minimum degree
   METIS,           // METIS nested dissection
   NestedDissection // CHOLMOD's own nested dissection (METIS-based, constrained)
@@ -41,12 +41,14 @@ public:
   /// Whether the backend was compiled in.
   static bool IsAvailable(SolverBackend backend);
 
-  /// Factors a symmetric positive definite matrix (its lower triangle is read).
+  /// Factors a symmetric positive definite matrix (its upper triangle is read).
   /// Returns an error message, empty on success.
   /// With CHOLMOD, the symbolic analysis predicts the factor's size first; a factor larger
   /// than `maximumBytes` (0: no limit) is refused with an error instead of being attempted.
+  /// `blockSize` > 1 says the unknowns come in groups of that many with one pattern (x, y, z
+  /// coupled); CHOLMOD then orders the much smaller graph of the groups.
   std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend,
-    FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0);
+    FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0, int blockSize = 1);
 
   /// Solves for every column of `rhs` with the current factor. With CHOLMOD, solves for up to
   /// four columns run independent subtrees of the factor through `loop`.
