@@ -81,7 +81,8 @@ public:
     {
       for (std::size_t b = 0; b < columns.size(); ++b)
       {
-        coupled[columns[b]].insert(coupled[columns[b]].end(), columns.begin(), columns.begin() + b + 1);
+        std::vector<int>& column = coupled[columns[b]];
+        column.insert(column.end(), columns.begin(), columns.begin() + b + 1);
       }
     }
     this->ColumnStart.assign(1, 0);
@@ -133,7 +134,8 @@ public:
           for (int r = 0; r < (a == b ? c + 1 : 3); ++r)
           {
             matrix.innerIndexPtr()[entry] = 3 * a + r;
-            matrix.valuePtr()[entry++] = this->Blocks[k](r, c) + (a == b && r == c ? diagonal[b] : 0.0);
+            matrix.valuePtr()[entry++] =
+              this->Blocks[k](r, c) + (a == b && r == c ? diagonal[b] : 0.0);
           }
         }
       }

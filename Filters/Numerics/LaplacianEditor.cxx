@@ -206,8 +206,8 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
     this->Implicit.reset();
     auto implicit = std::make_unique<ImplicitSimilaritySystem>();
     ++this->NumberOfFactorizationAttempts;
-    const std::string error = implicit->Build(
-      *this->Mesh, this->Region, this->System, this->SystemBuiltFrom, rotation.Formulation, this->Loop);
+    const std::string error = implicit->Build(*this->Mesh, this->Region, this->System,
+      this->SystemBuiltFrom, rotation.Formulation, this->Loop);
     if (!error.empty())
     {
       return error;
