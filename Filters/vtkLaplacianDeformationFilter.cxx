@@ -32,9 +32,11 @@
 #include <vtksys/SystemInformation.hxx>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -143,6 +145,8 @@ vtkSmartPointer<vtkTransform> PropertyTransform(
 struct vtkLaplacianDeformationFilter::vtkInternals
 {
   std::vector<vtkSmartPointer<vtkLinearTransform>> HandleTransforms;
+  // Group -> (translation, rotation) for groups 1 and above moved by properties.
+  std::map<int, std::array<double, 6>> HandleGroupMotions;
   // Committed rest shapes, newest last, for the input of the given MTime.
   std::vector<vtkSmartPointer<vtkPoints>> Commits;
   vtkMTimeType CommittedInput = 0;
@@ -250,6 +254,52 @@ void vtkLaplacianDeformationFilter::RemoveAllHandleTransforms()
   if (!this->Internals->HandleTransforms.empty())
   {
     this->Internals->HandleTransforms.clear();
+    this->Modified();
+  }
+}
+
+void vtkLaplacianDeformationFilter::SetHandleGroupMotion(int group, double translationX,
+  double translationY, double translationZ, double rotationX, double rotationY, double rotationZ)
+{
+  if (group < 1)
+  {
+    vtkErrorMacro(<< "handle group " << group << " cannot take a motion: group 0 moves with "
+                  << "HandleTranslation and HandleRotation, and groups are not negative");
+    return;
+  }
+  const std::array<double, 6> motion = { translationX, translationY, translationZ, rotationX,
+    rotationY, rotationZ };
+  auto& motions = this->Internals->HandleGroupMotions;
+  const auto found = motions.find(group);
+  if (found == motions.end() || found->second != motion)
+  {
+    motions[group] = motion;
+    this->Modified();
+  }
+}
+
+bool vtkLaplacianDeformationFilter::GetHandleGroupMotion(int group, double motion[6])
+{
+  const auto& motions = this->Internals->HandleGroupMotions;
+  const auto found = motions.find(group);
+  if (found == motions.end())
+  {
+    return false;
+  }
+  std::copy(found->second.begin(), found->second.end(), motion);
+  return true;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfHandleGroupMotions()
+{
+  return static_cast<int>(this->Internals->HandleGroupMotions.size());
+}
+
+void vtkLaplacianDeformationFilter::RemoveAllHandleGroupMotions()
+{
+  if (!this->Internals->HandleGroupMotions.empty())
+  {
+    this->Internals->HandleGroupMotions.clear();
     this->Modified();
   }
 }
@@ -733,21 +783,28 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
 
 void vtkLaplacianDeformationFilter::MapHandles()
 {
-  // Group g follows its transform; group 0 without one follows the handle properties.
+  // Group g follows its transform; without one, group 0 follows the handle properties and
+  // the others their motions about their rest centroids.
   vtkInternals& internals = *this->Internals;
   const int groups = internals.Editor.GetRegion().NumberOfHandleGroups;
   internals.Maps.assign(groups, le::AffineMap::Identity());
   for (int g = 0; g < groups; ++g)
   {
+    double motion[6], center[3];
     if (vtkLinearTransform* transform = this->GetHandleTransform(g))
     {
       internals.Maps[g] = internals.Surface.NormalizedMap(transform);
     }
-  }
-  if (!this->GetHandleTransform(0) && groups > 0)
-  {
-    internals.Maps[0] = internals.Surface.NormalizedMap(
-      PropertyTransform(this->HandleCenter, this->HandleRotation, this->HandleTranslation));
+    else if (g == 0)
+    {
+      internals.Maps[0] = internals.Surface.NormalizedMap(
+        PropertyTransform(this->HandleCenter, this->HandleRotation, this->HandleTranslation));
+    }
+    else if (this->GetHandleGroupMotion(g, motion) && this->GetHandleGroupCenter(g, center))
+    {
+      internals.Maps[g] =
+        internals.Surface.NormalizedMap(PropertyTransform(center, motion + 3, motion));
+    }
   }
 }
 
@@ -822,6 +879,7 @@ void vtkLaplacianDeformationFilter::CommitEdit()
   }
   this->SetHandleTranslation(0.0, 0.0, 0.0);
   this->SetHandleRotation(0.0, 0.0, 0.0);
+  this->RemoveAllHandleGroupMotions();
   this->Modified();
   this->InvokeEvent(EditCommittedEvent);
 }
@@ -928,6 +986,12 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
   os << indent << "RoleColors: " << (this->RoleColors ? "On" : "Off") << "\n";
   os << indent << "NumberOfHandleTransforms: " << this->Internals->HandleTransforms.size() << "\n";
+  for (const auto& [group, motion] : this->Internals->HandleGroupMotions)
+  {
+    os << indent << "HandleGroupMotion " << group << ": translation (" << motion[0] << ", "
+       << motion[1] << ", " << motion[2] << "), rotation (" << motion[3] << ", " << motion[4]
+       << ", " << motion[5] << ")\n";
+  }
   os << indent << "NumberOfCommits: " << this->Internals->Commits.size() << "\n";
   os << indent << "Last update:\n";
   const vtkIndent next = indent.GetNextIndent();

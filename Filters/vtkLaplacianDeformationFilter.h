@@ -427,6 +427,23 @@ public:
   void RemoveAllHandleTransforms();
 
   /**
+   * Handle group `group`'s motion (group 1 and above; array value 2 + group), as
+   * HandleTranslation and HandleRotation move group 0: a translation in mesh units, applied
+   * after rotation angles in degrees about x, then y, then z, about the group's rest centroid
+   * (GetHandleGroupCenter). A group with a transform object follows that instead. This is how
+   * ParaView's proxy and pvpython move further groups (property HandleGroupMotions, seven
+   * numbers a group). CommitEdit sets every motion back to rest.
+   */
+  void SetHandleGroupMotion(int group, double translationX, double translationY,
+    double translationZ, double rotationX, double rotationY, double rotationZ);
+  /** Group `group`'s motion as (translation, rotation); false if it has none. */
+  bool GetHandleGroupMotion(int group, double motion[6]);
+  /** How many groups have a motion. */
+  int GetNumberOfHandleGroupMotions();
+  /** Forget every group's motion. */
+  void RemoveAllHandleGroupMotions();
+
+  /**
    * Make the current result the rest shape of the next edit, keeping the input connection:
    * the filter updates, keeps the output's points, sets HandleTranslation and HandleRotation to
    * zero and moves HandleCenter with the handle, then fires EditCommittedEvent. Handle

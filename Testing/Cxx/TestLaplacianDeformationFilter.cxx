@@ -258,7 +258,11 @@ TEST(Filter, PassesDataThroughAndRecomputesNormals)
   }
 }
 
-TEST(Filter, SelectsByArrayWithSeveralHandleGroups)
+namespace
+{
+// A bumpy plane labelled for array selection: the ROI in the middle, handle group 0 (label 2)
+// left of the centre and group 1 (label 3) right of it.
+vtkSmartPointer<vtkPolyData> TwoHandleGroupsPlane()
 {
   auto input = BumpyPlane(40);
   vtkNew<vtkIntArray> selection;
@@ -279,10 +283,24 @@ TEST(Filter, SelectsByArrayWithSeveralHandleGroups)
     selection->InsertNextValue(label);
   }
   input->GetPointData()->AddArray(selection);
-  vtkNew<vtkLaplacianDeformationFilter> filter;
+  return input;
+}
+
+vtkSmartPointer<vtkLaplacianDeformationFilter> ArrayEdit(vtkPolyData* input)
+{
+  auto filter = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
   filter->SetInputData(input);
   filter->SetSelectionModeToArray();
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Selection");
+  return filter;
+}
+}
+
+TEST(Filter, SelectsByArrayWithSeveralHandleGroups)
+{
+  auto input = TwoHandleGroupsPlane();
+  auto* selection = vtkIntArray::SafeDownCast(input->GetPointData()->GetArray("Selection"));
+  auto filter = ArrayEdit(input);
   filter->SetHandleTransform(0, Translation(0, 0, 0.2));
   filter->SetHandleTransform(1, Translation(0, 0, -0.1));
   filter->Update();
@@ -303,6 +321,67 @@ TEST(Filter, SelectsByArrayWithSeveralHandleGroups)
     }
   }
   EXPECT_EQ(filter->GetNumberOfHandleTransforms(), 2);
+}
+
+TEST(Filter, MovesFurtherHandleGroupsByProperties)
+{
+  // Group 1 turned 30 degrees about z through its rest centroid and lowered, by the property
+  // form ParaView and pvpython use, must equal the same motion given as a transform object.
+  auto input = TwoHandleGroupsPlane();
+  auto byMotion = ArrayEdit(input);
+  byMotion->SetHandleTranslation(0.0, 0.0, 0.2);
+  byMotion->SetHandleGroupMotion(1, 0.0, 0.0, -0.1, 0.0, 0.0, 30.0);
+  byMotion->Update();
+  double center[3], motion[6];
+  ASSERT_TRUE(byMotion->GetHandleGroupCenter(1, center));
+  ASSERT_TRUE(byMotion->GetHandleGroupMotion(1, motion));
+  EXPECT_EQ(motion[5], 30.0);
+  EXPECT_FALSE(byMotion->GetHandleGroupMotion(2, motion));
+
+  vtkNew<vtkTransform> turn;
+  turn->PostMultiply();
+  turn->Translate(-center[0], -center[1], -center[2]);
+  turn->RotateZ(30.0);
+  turn->Translate(center);
+  turn->Translate(0.0, 0.0, -0.1);
+  auto byTransform = ArrayEdit(input);
+  byTransform->SetHandleTranslation(0.0, 0.0, 0.2);
+  byTransform->SetHandleTransform(1, turn);
+  byTransform->Update();
+  EXPECT_LT(MaxPointDistance(byMotion->GetOutput(), byTransform->GetOutput()), 1e-12);
+
+  auto* selection = vtkIntArray::SafeDownCast(input->GetPointData()->GetArray("Selection"));
+  int handleVertices = 0;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    if (selection->GetValue(i) == 3)
+    {
+      double p[3], q[3], target[3];
+      input->GetPoint(i, p);
+      byMotion->GetOutput()->GetPoint(i, q);
+      turn->TransformPoint(p, target);
+      EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(q, target)), 1e-3 * Diagonal(input));
+      ++handleVertices;
+    }
+  }
+  EXPECT_GT(handleVertices, 10);
+
+  // A transform object wins over a motion; a commit sets the motions back to rest.
+  byTransform->SetHandleGroupMotion(1, 0.0, 0.0, 0.3, 0.0, 0.0, 0.0);
+  byTransform->Update();
+  EXPECT_LT(MaxPointDistance(byMotion->GetOutput(), byTransform->GetOutput()), 1e-12);
+  vtkNew<vtkPolyData> edited;
+  edited->DeepCopy(byMotion->GetOutput());
+  byMotion->CommitEdit();
+  EXPECT_EQ(byMotion->GetNumberOfHandleGroupMotions(), 0);
+  byMotion->Update();
+  EXPECT_LT(MaxPointDistance(byMotion->GetOutput(), edited), 1e-9 * Diagonal(input));
+
+  // Group 0 moves by HandleTranslation and HandleRotation, not by a motion.
+  ErrorCatcher errors(byMotion);
+  byMotion->SetHandleGroupMotion(0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0);
+  EXPECT_NE(errors.Messages.find("group 0 moves with HandleTranslation"), std::string::npos);
+  EXPECT_EQ(byMotion->GetNumberOfHandleGroupMotions(), 0);
 }
 
 TEST(Filter, EditsTheCactusFromItsSelAndDefFiles)
