@@ -258,22 +258,22 @@ void vtkLaplacianDeformationFilter::RemoveAllHandleTransforms()
   }
 }
 
-void vtkLaplacianDeformationFilter::SetHandleGroupMotion(int group, double translationX,
+void vtkLaplacianDeformationFilter::SetHandleGroupMotion(vtkIdType group, double translationX,
   double translationY, double translationZ, double rotationX, double rotationY, double rotationZ)
 {
-  if (group < 1)
+  if (group < 1 || group > VTK_INT_MAX)
   {
-    vtkErrorMacro(<< "handle group " << group << " cannot take a motion: group 0 moves with "
-                  << "HandleTranslation and HandleRotation, and groups are not negative");
+    vtkErrorMacro(<< "handle group " << group << " cannot take a motion: motions are for groups "
+                  << "1 and above (group 0 moves with HandleTranslation and HandleRotation)");
     return;
   }
   const std::array<double, 6> motion = { translationX, translationY, translationZ, rotationX,
     rotationY, rotationZ };
   auto& motions = this->Internals->HandleGroupMotions;
-  const auto found = motions.find(group);
+  const auto found = motions.find(static_cast<int>(group));
   if (found == motions.end() || found->second != motion)
   {
-    motions[group] = motion;
+    motions[static_cast<int>(group)] = motion;
     this->Modified();
   }
 }

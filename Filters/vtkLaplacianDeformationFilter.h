@@ -432,9 +432,11 @@ public:
    * after rotation angles in degrees about x, then y, then z, about the group's rest centroid
    * (GetHandleGroupCenter). A group with a transform object follows that instead. This is how
    * ParaView's proxy and pvpython move further groups (property HandleGroupMotions, seven
-   * numbers a group). CommitEdit sets every motion back to rest.
+   * numbers a group; `group` is a vtkIdType because the proxy sends doubles, which ParaView's
+   * client-server layer converts to 64-bit integers but not to int). CommitEdit sets every
+   * motion back to rest.
    */
-  void SetHandleGroupMotion(int group, double translationX, double translationY,
+  void SetHandleGroupMotion(vtkIdType group, double translationX, double translationY,
     double translationZ, double rotationX, double rotationY, double rotationZ);
   /** Group `group`'s motion as (translation, rotation); false if it has none. */
   bool GetHandleGroupMotion(int group, double motion[6]);

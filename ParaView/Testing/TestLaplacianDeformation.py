@@ -77,6 +77,30 @@ if gap > 1e-9:
 roi = sum(1 for i in range(rest.GetNumberOfPoints()) if labels.GetValue(i) > 0)
 print(f"point selection of {len(ids)} handle points: ROI of {roi} points, {gap} from the array edit")
 
+# A second handle group (label 3) on the equator, moved through the proxy's HandleGroupMotions
+# (group, translation, rotation angles about x, y, z through the group's rest centroid): its
+# points land where that motion takes them, and the first group still follows the handle.
+group = [i for i in range(rest.GetNumberOfPoints())
+         if labels.GetValue(i) == 1 and abs(rest.GetPoint(i)[2]) < 0.06 and rest.GetPoint(i)[0] > 0.3]
+for i in group:
+    labels.SetValue(i, 3)
+labeled.Modified()
+producer.MarkModified(producer)
+two_groups = simple.LaplacianDeformation(Input=producer, SelectionMode="Array", SelectionArray=["POINTS", "Labels"])
+two_groups.HandleGroupMotions = [1, 0.0, 0.0, 0.1, 0.0, 0.0, 20.0]
+moved = servermanager.Fetch(two_groups)
+centroid = [sum(rest.GetPoint(i)[k] for i in group) / len(group) for k in range(3)]
+a = math.radians(20.0)
+worst = 0.0
+for i in group:
+    x, y, z = (rest.GetPoint(i)[k] - centroid[k] for k in range(3))
+    target = (x * math.cos(a) - y * math.sin(a) + centroid[0], x * math.sin(a) + y * math.cos(a) + centroid[1],
+              z + centroid[2] + 0.1)
+    worst = max(worst, math.dist(moved.GetPoint(i), target))
+if not group or worst > 2e-3:
+    failures.append(f"handle group 1 ({len(group)} points) is {worst} from its motion's targets")
+print(f"handle group 1 by HandleGroupMotions: {len(group)} points, {worst} from their targets")
+
 view = scene.show(deform)
 SaveScreenshot(sys.argv[3], view, ImageResolution=[600, 500])
 failures += scene.compare_with_baseline(sys.argv[3], sys.argv[2], 0.05)
