@@ -350,8 +350,8 @@ public:
 
   /**
    * CHOLMOD's fill-reducing ordering: automatic (default: AMD below 300,000 unknowns, METIS
-   * from there, as measured in the README), AMD, METIS or CHOLMOD's nested dissection.
-   * SimplicialLDLT always uses AMD.
+   * from there and for the implicit mode's 3 x 3 block system, as measured in the README), AMD,
+   * METIS or CHOLMOD's nested dissection. SimplicialLDLT always uses AMD.
    */
   vtkSetClampMacro(Ordering, int, ORDERING_AUTOMATIC, ORDERING_NESTED_DISSECTION);
   vtkGetMacro(Ordering, int);
