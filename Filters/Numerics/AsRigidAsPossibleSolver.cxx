@@ -191,23 +191,24 @@ std::string AsRigidAsPossibleSolver::Build(
                        options.MaximumFactorBytes);
 }
 
-std::vector<Vector3> AsRigidAsPossibleSolver::Patch(const Positions& roiPositions) const
+void AsRigidAsPossibleSolver::Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const
 {
-  std::vector<Vector3> patch(this->RestPatch.rows());
+  patch.resize(this->RestPatch.rows());
   for (Eigen::Index k = 0; k < this->RestPatch.rows(); ++k)
   {
     patch[k] = (k < this->NumberOfROIVertices ? roiPositions.row(k) : this->RestPatch.row(k)).transpose();
   }
-  return patch;
 }
 
 double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
-  std::vector<Eigen::Matrix3d>& rotations, Quaternions& quaternions, const ParallelFor& loop) const
+  std::vector<Eigen::Matrix3d>& rotations, Quaternions& quaternions, ArapIterate::Workspace& work,
+  const ParallelFor& loop) const
 {
   rotations.resize(this->NumberOfEnergyVertices);
   const bool seed = static_cast<int>(quaternions.size()) != this->NumberOfEnergyVertices;
   quaternions.resize(this->NumberOfEnergyVertices);
-  std::vector<double> residuals(this->NumberOfEnergyVertices, 0.0);
+  std::vector<double>& residuals = work.Residuals;
+  residuals.assign(this->NumberOfEnergyVertices, 0.0);
   loop(0, this->NumberOfEnergyVertices, [&](int first, int last) {
     for (int i = first; i < last; ++i)
     {
@@ -239,10 +240,11 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
 }
 
 Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3d>& rotations,
-  const std::vector<Vector3>& patch, const ParallelFor& loop) const
+  const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const
 {
   const int free = static_cast<int>(this->FreeRows.size());
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rhs(free, 3);
+  auto& rhs = work.RightHandSide;
+  rhs.resize(free, 3);
   loop(0, free, [&](int first, int last) {
     for (int u = first; u < last; ++u)
     {
@@ -271,7 +273,10 @@ ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& 
   none.MaximumIterations = 0;
   this->Solve(handleMaps, guess, none);
   const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
-  const Eigen::MatrixXd free = this->FreeRows.empty() ? Eigen::MatrixXd() : this->Global(identities, this->Patch(guess.Points), SerialFor);
+  this->Patch(guess.Points, guess.Work.Patch);
+  const Eigen::MatrixXd free = this->FreeRows.empty()
+    ? Eigen::MatrixXd()
+    : this->Global(identities, guess.Work.Patch, guess.Work, SerialFor);
   for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
   {
     guess.Points.row(this->FreeRows[u]) = free.row(u);
@@ -312,76 +317,73 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
       roi.row(this->FreeRows[u]) = x.row(u);
     }
   };
-  std::vector<Eigen::Matrix3d> rotations;
-  result.Energy = this->Rotate(this->Patch(roiPositions), rotations, quaternions, loop);
+  ArapIterate::Workspace& work = iterate.Work;
+  std::vector<Eigen::Matrix3d>& rotations = work.Rotations;
+  std::vector<Vector3>& patch = work.Patch;
+  this->Patch(roiPositions, patch);
+  result.Energy = this->Rotate(patch, rotations, quaternions, work, loop);
   if (free == 0 || options.MaximumIterations <= 0)
   {
     return result;
   }
   // Anderson acceleration on the fixed point x -> Global(Local(x)), over flattened positions.
+  // The last History differences of g and of the residual f = g - x are the columns of a ring.
   const int m = std::max(options.History, 1);
-  std::vector<Eigen::VectorXd> gDifferences, fDifferences;
-  Eigen::VectorXd previousG, previousF;
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(free);
+  work.GDifferences.resize(size, m);
+  work.FDifferences.resize(size, m);
+  int stored = 0, newest = -1;
+  bool hasPrevious = false;
   Eigen::MatrixXd x = freeOf(roiPositions);
+  Eigen::MatrixXd next(free, 3);
   for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
   {
-    const Eigen::MatrixXd g = this->Global(rotations, this->Patch(roiPositions), loop);
-    const Eigen::VectorXd gFlat = Eigen::Map<const Eigen::VectorXd>(g.data(), g.size());
-    const Eigen::VectorXd fFlat = gFlat - Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
-    Eigen::MatrixXd next = g;
-    const bool accelerated = options.Accelerate && previousG.size() == gFlat.size();
+    const Eigen::MatrixXd g = this->Global(rotations, patch, work, loop);
+    const auto gFlat = Eigen::Map<const Eigen::VectorXd>(g.data(), size);
+    work.Residual = gFlat - Eigen::Map<const Eigen::VectorXd>(x.data(), size);
+    next = g;
+    const bool accelerated = options.Accelerate && hasPrevious;
     if (accelerated)
     {
-      gDifferences.push_back(gFlat - previousG);
-      fDifferences.push_back(fFlat - previousF);
-      if (static_cast<int>(gDifferences.size()) > m)
-      {
-        gDifferences.erase(gDifferences.begin());
-        fDifferences.erase(fDifferences.begin());
-      }
+      newest = (newest + 1) % m;
+      stored = std::min(stored + 1, m);
+      work.GDifferences.col(newest) = gFlat - work.PreviousG;
+      work.FDifferences.col(newest) = work.Residual - work.PreviousF;
       // The mixing weights minimize |f - dF theta|: with at most History columns, through the
       // small Gram matrix (a QR of the tall dF took 20-35 ms at 30k vertices, this < 1 ms); a
       // rank-revealing solve keeps nearly dependent differences harmless.
-      const int h = static_cast<int>(fDifferences.size());
-      Eigen::MatrixXd gram(h, h);
-      Eigen::VectorXd projection(h);
-      for (int a = 0; a < h; ++a)
-      {
-        projection[a] = fDifferences[a].dot(fFlat);
-        for (int b = 0; b <= a; ++b)
-        {
-          gram(a, b) = gram(b, a) = fDifferences[a].dot(fDifferences[b]);
-        }
-      }
+      const auto dF = work.FDifferences.leftCols(stored);
+      const Eigen::MatrixXd gram = dF.transpose() * dF;
+      const Eigen::VectorXd projection = dF.transpose() * work.Residual;
       const Eigen::VectorXd theta = gram.completeOrthogonalDecomposition().solve(projection);
-      Eigen::VectorXd mixed = gFlat;
-      for (int c = 0; c < h; ++c)
-      {
-        mixed -= theta[c] * gDifferences[c];
-      }
-      next = Eigen::Map<const Eigen::MatrixXd>(mixed.data(), free, 3);
+      Eigen::Map<Eigen::VectorXd>(next.data(), size).noalias() -=
+        work.GDifferences.leftCols(stored) * theta;
     }
-    previousG = gFlat;
-    previousF = fFlat;
+    work.PreviousG = gFlat;
+    work.PreviousF = work.Residual;
+    hasPrevious = true;
 
-    Positions candidate = roiPositions;
+    Positions& candidate = work.Candidate;
+    candidate = roiPositions;
     setFree(candidate, next);
-    std::vector<Eigen::Matrix3d> candidateRotations;
-    Quaternions candidateQuaternions = quaternions;
-    double energy =
-      this->Rotate(this->Patch(candidate), candidateRotations, candidateQuaternions, loop);
+    std::vector<Eigen::Matrix3d>& candidateRotations = work.CandidateRotations;
+    Quaternions& candidateQuaternions = work.CandidateQuaternions;
+    candidateQuaternions = quaternions;
+    this->Patch(candidate, patch);
+    double energy = this->Rotate(patch, candidateRotations, candidateQuaternions, work, loop);
     if (energy > result.Energy && accelerated)
     {
       // The accelerated iterate did not lower the energy: take the plain one, start over.
       next = g;
       setFree(candidate, next);
       candidateQuaternions = quaternions;
-      energy = this->Rotate(this->Patch(candidate), candidateRotations, candidateQuaternions, loop);
-      gDifferences.clear();
-      fDifferences.clear();
+      this->Patch(candidate, patch);
+      energy = this->Rotate(patch, candidateRotations, candidateQuaternions, work, loop);
+      stored = 0;
+      newest = -1;
     }
     const double decrease = result.Energy - energy;
-    roiPositions = candidate;
+    roiPositions.swap(candidate);
     rotations.swap(candidateRotations);
     quaternions.swap(candidateQuaternions);
     x = next;

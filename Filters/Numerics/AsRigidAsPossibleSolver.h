@@ -47,6 +47,26 @@ struct ArapIterate
 {
   Positions Points;
   Quaternions Rotations;
+
+  /// Buffers the iterations reuse, kept with the iterate so that the updates of a drag do not
+  /// allocate: on regions of tens of thousands of vertices, the first touch of fresh memory
+  /// cost more than the iterations' arithmetic.
+  struct Workspace
+  {
+    std::vector<Vector3> Patch;
+    std::vector<Eigen::Matrix3d> Rotations;
+    std::vector<Eigen::Matrix3d> CandidateRotations;
+    Quaternions CandidateQuaternions;
+    Positions Candidate;
+    std::vector<double> Residuals;
+    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> RightHandSide;
+    // Anderson acceleration's history (columns) and last iterate.
+    Eigen::MatrixXd GDifferences;
+    Eigen::MatrixXd FDifferences;
+    Eigen::VectorXd PreviousG;
+    Eigen::VectorXd PreviousF;
+    Eigen::VectorXd Residual;
+  } Work;
 };
 
 struct ArapResult
@@ -76,14 +96,14 @@ public:
 
 private:
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
-  std::vector<Vector3> Patch(const Positions& roiPositions) const;
+  void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
   // SVDs where empty). Returns the energy.
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
-    Quaternions& quaternions, const ParallelFor& loop) const;
+    Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop) const;
   // The global step: new free positions for the rotations.
   Eigen::MatrixXd Global(const std::vector<Eigen::Matrix3d>& rotations,
-    const std::vector<Vector3>& patch, const ParallelFor& loop) const;
+    const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const;
 
   int NumberOfROIVertices = 0;
   // Patch vertices: ROI rows first, then the rest; their rest positions.
