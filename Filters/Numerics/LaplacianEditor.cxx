@@ -178,7 +178,7 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
   {
     this->Normals = std::make_unique<SmoothNormals>();
     this->Normals->Build(*this->Mesh, this->Region.Vertices, rotation.NormalSmoothingRadius,
-      this->RegionBuiltFrom.Distances);
+      this->RegionBuiltFrom.Distances, this->Loop);
     this->Frames = std::make_unique<LocalFrames>();
     this->Frames->Build(*this->Mesh, this->Region.Vertices,
       this->Normals->Compute(this->System.GetRestPositions()),

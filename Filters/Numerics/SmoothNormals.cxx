@@ -2,6 +2,9 @@
 
 #include "GeodesicDistance.h"
 
+#include <algorithm>
+#include <numeric>
+
 namespace LaplacianEditing
 {
 namespace
@@ -14,8 +17,8 @@ double FallOff(double distance, double radius)
 }
 }
 
-void SmoothNormals::Build(
-  const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius, DistanceMethod method)
+void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& vertices,
+  double radius, DistanceMethod method, const ParallelFor& loop)
 {
   this->Radius = radius;
   this->Method = method;
@@ -41,35 +44,100 @@ void SmoothNormals::Build(
     return extended[v];
   };
 
-  // Greedy cover: an uncovered ROI vertex becomes a sample; one Dijkstra of the full radius
-  // from it gives its kernel, the vertices it covers and the vertices it blends into.
-  std::vector<char> covered(n, 0);
-  std::vector<Eigen::Triplet<double>> sampleTriplets, blendTriplets;
-  GeodesicSearch search(mesh, method);
-  int samples = 0;
-  for (int row = 0; row < n; ++row)
+  // Greedy cover: an uncovered ROI vertex becomes a sample, and covers the ROI vertices within
+  // the spacing. Only that short search is sequential; the samples' kernels need searches of
+  // the full radius, which are independent and run through `loop`.
+  std::vector<int> sampleRows;
   {
-    if (covered[row])
+    std::vector<char> covered(n, 0);
+    GeodesicSearch search(mesh, method);
+    // A tolerance keeps vertices at exactly the spacing (regular grids) covered whatever the
+    // last bits of their coordinates.
+    const double reach = spacing * (1.0 + 1e-6);
+    for (int row = 0; row < n; ++row)
     {
-      continue;
+      if (covered[row])
+      {
+        continue;
+      }
+      sampleRows.push_back(row);
+      search.Visit({ vertices[row] }, reach, [&](int v, double) {
+        if (roiRow[v] >= 0)
+        {
+          covered[roiRow[v]] = 1;
+        }
+      });
     }
-    const int sample = samples++;
-    search.Visit({ vertices[row] }, radius, [&](int v, double d) {
-      sampleTriplets.emplace_back(sample, extend(v), FallOff(d, radius));
+  }
+  const int samples = static_cast<int>(sampleRows.size());
+  std::vector<std::vector<std::pair<int, double>>> reached(samples);
+  loop(0, samples, [&](int first, int last) {
+    GeodesicSearch search(mesh, method);
+    for (int sample = first; sample < last; ++sample)
+    {
+      search.Visit({ vertices[sampleRows[sample]] }, radius,
+        [&](int v, double d) { reached[sample].emplace_back(v, d); });
+    }
+  });
+  // Each sample's kernel, and the ROI vertices it blends into, written straight into the
+  // matrices' compressed rows: at 30k vertices they are 1.3M weights, and building them through
+  // triplets cost more than the searches. The support is numbered in order of discovery, as a
+  // serial cover would.
+  Eigen::Index kernelEntries = 0;
+  std::vector<int> blendStart(n + 1, 0);
+  for (const auto& visited : reached)
+  {
+    kernelEntries += static_cast<Eigen::Index>(visited.size());
+    for (const auto& [v, d] : visited)
+    {
+      extend(v);
       if (roiRow[v] >= 0 && d < blendRadius)
       {
-        blendTriplets.emplace_back(roiRow[v], sample, FallOff(d, blendRadius));
-        // A tolerance keeps vertices at exactly the spacing (regular grids) covered whatever
-        // the last bits of their coordinates.
-        covered[roiRow[v]] = covered[roiRow[v]] || d <= spacing * (1.0 + 1e-6);
+        ++blendStart[roiRow[v] + 1];
       }
-    });
+    }
   }
   this->NumberOfSupportVertices = static_cast<int>(extendedVertices.size());
-  this->SampleWeights.resize(samples, this->NumberOfSupportVertices);
-  this->SampleWeights.setFromTriplets(sampleTriplets.begin(), sampleTriplets.end());
-  this->BlendWeights.resize(n, samples);
-  this->BlendWeights.setFromTriplets(blendTriplets.begin(), blendTriplets.end());
+  auto& kernels = this->SampleWeights;
+  kernels.resize(samples, this->NumberOfSupportVertices);
+  kernels.resizeNonZeros(kernelEntries);
+  std::vector<std::pair<int, double>> kernel;
+  int entry = 0;
+  for (int sample = 0; sample < samples; ++sample)
+  {
+    kernel.clear();
+    for (const auto& [v, d] : reached[sample])
+    {
+      kernel.emplace_back(extended[v], FallOff(d, radius));
+    }
+    std::sort(kernel.begin(), kernel.end());
+    kernels.outerIndexPtr()[sample] = entry;
+    for (const auto& [column, value] : kernel)
+    {
+      kernels.innerIndexPtr()[entry] = column;
+      kernels.valuePtr()[entry++] = value;
+    }
+  }
+  kernels.outerIndexPtr()[samples] = entry;
+
+  std::partial_sum(blendStart.begin(), blendStart.end(), blendStart.begin());
+  auto& blends = this->BlendWeights;
+  blends.resize(n, samples);
+  blends.resizeNonZeros(blendStart.back());
+  std::copy(blendStart.begin(), blendStart.end(), blends.outerIndexPtr());
+  std::vector<int> next(blendStart.begin(), blendStart.end() - 1);
+  for (int sample = 0; sample < samples; ++sample) // each row's samples in increasing order
+  {
+    for (const auto& [v, d] : reached[sample])
+    {
+      if (roiRow[v] >= 0 && d < blendRadius)
+      {
+        const int slot = next[roiRow[v]]++;
+        blends.innerIndexPtr()[slot] = sample;
+        blends.valuePtr()[slot] = FallOff(d, blendRadius);
+      }
+    }
+  }
 
   // Area normals of the support need the triangles around it, and their corners.
   std::vector<char> seen(mesh.GetNumberOfTriangles(), 0);

@@ -32,7 +32,7 @@ class SmoothNormals
 public:
   /// Precomputes the samples and weights for the ROI `vertices` and support radius `radius`.
   void Build(const SurfaceMesh& mesh, const std::vector<int>& vertices, double radius,
-    DistanceMethod method = DistanceMethod::FastMarching);
+    DistanceMethod method = DistanceMethod::FastMarching, const ParallelFor& loop = SerialFor);
 
   /// Unit smooth normals at the ROI vertices, for ROI positions `roiPositions` (rows follow
   /// `vertices`); vertices outside the ROI keep their rest positions.
