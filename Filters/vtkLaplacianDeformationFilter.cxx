@@ -934,6 +934,20 @@ bool vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group, double cente
   return true;
 }
 
+double* vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group)
+{
+  if (!this->GetHandleGroupCenter(group, this->ReturnedGroupCenter))
+  {
+    std::fill_n(this->ReturnedGroupCenter, 3, 0.0);
+  }
+  return this->ReturnedGroupCenter;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfHandleGroups()
+{
+  return this->Internals->Editor.GetRegion().NumberOfHandleGroups;
+}
+
 int vtkLaplacianDeformationFilter::GetNumberOfCommits()
 {
   return static_cast<int>(this->Internals->Commits.size());

@@ -478,6 +478,17 @@ public:
    * pivot of its handle widget; false if the last update had no such group.
    */
   bool GetHandleGroupCenter(int group, double center[3]);
+  /**
+   * The same centroid as a return value, for callers through ParaView's client-server layer,
+   * which returns no output arguments (the plugin's panel); (0, 0, 0) if there is no such group.
+   */
+  double* GetHandleGroupCenter(int group) VTK_SIZEHINT(3);
+
+  /**
+   * How many handle groups the region of the last update has (groups 0, 1, ...): 1 for a
+   * handle alone, 0 before the first region.
+   */
+  int GetNumberOfHandleGroups();
 
   /**
    * Numeric factorizations completed since construction.
@@ -593,6 +604,7 @@ protected:
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
   double HandleTranslation[3] = { 0.0, 0.0, 0.0 };
   double HandleRotation[3] = { 0.0, 0.0, 0.0 };
+  double ReturnedGroupCenter[3] = { 0.0, 0.0, 0.0 };
   double HandleRadius = 0.05;
   double ROIRadius = 0.5;
   double AnchorPadding = 0.1;

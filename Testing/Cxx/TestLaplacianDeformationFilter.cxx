@@ -29,6 +29,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <map>
@@ -337,6 +338,12 @@ TEST(Filter, MovesFurtherHandleGroupsByProperties)
   ASSERT_TRUE(byMotion->GetHandleGroupMotion(1, motion));
   EXPECT_EQ(motion[5], 30.0);
   EXPECT_FALSE(byMotion->GetHandleGroupMotion(2, motion));
+  // The forms ParaView's panel reads through its client-server layer.
+  EXPECT_EQ(byMotion->GetNumberOfHandleGroups(), 2);
+  const double* returned = byMotion->GetHandleGroupCenter(1);
+  EXPECT_TRUE(std::equal(center, center + 3, returned));
+  EXPECT_FALSE(byMotion->GetHandleGroupCenter(2, center));
+  EXPECT_EQ(byMotion->GetHandleGroupCenter(2)[0], 0.0);
 
   vtkNew<vtkTransform> turn;
   turn->PostMultiply();
