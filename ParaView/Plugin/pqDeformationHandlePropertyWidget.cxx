@@ -1,19 +1,64 @@
 #include "pqDeformationHandlePropertyWidget.h"
 
+#include "pqApplicationCore.h"
 #include "pqDoubleLineEdit.h"
+#include "pqPipelineSource.h"
 #include "pqPointPickingHelper.h"
+#include "pqServerManagerModel.h"
 #include "pqView.h"
+#include "vtkClientServerStream.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkBoundingBox.h"
+#include "vtkPVDataInformation.h"
 #include "vtkPVGeneralSettings.h"
+#include "vtkPVSession.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
+#include "vtkSMParaViewPipelineController.h"
 #include "vtkSMPropertyGroup.h"
 #include "vtkSMPropertyHelper.h"
-#include "vtkSMViewProxy.h"
 #include "vtkSMProxy.h"
+#include "vtkSMSession.h"
+#include "vtkSMSessionProxyManager.h"
+#include "vtkSMSourceProxy.h"
+#include "vtkSMViewProxy.h"
 
 #include <QCheckBox>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
+
+#include <algorithm>
+
+struct pqDeformationHandlePropertyWidget::GroupHandle
+{
+  vtkSmartPointer<vtkSMProxy> Widget;
+  std::array<pqDoubleLineEdit*, 6> Fields; // translation, then rotation
+  std::array<QLabel*, 2> Labels;
+};
+
+namespace
+{
+// Adds the widget to the view's hidden representations, or removes it, as ParaView does with the
+// panel's own widget.
+void ShowInView(vtkSMProxy* widget, pqView* view, bool add)
+{
+  if (!view)
+  {
+    return;
+  }
+  vtkSMPropertyHelper representations(view->getProxy(), "HiddenRepresentations", true);
+  if (add)
+  {
+    representations.Add(widget);
+  }
+  else
+  {
+    representations.Remove(widget);
+  }
+  view->getProxy()->UpdateVTKObjects();
+}
+}
 
 pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
   vtkSMProxy* proxy, vtkSMPropertyGroup* group, QWidget* parent)
@@ -56,6 +101,16 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
     ++row;
   }
 
+  // Further handle groups: rows added as the filter reports them (updateGroupHandles).
+  auto* groups = new QWidget(this);
+  this->GroupLayout = new QGridLayout(groups);
+  this->GroupLayout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(groups, row++, 0, 1, 4);
+  if (vtkSMProperty* motions = group->GetProperty("GroupMotions"))
+  {
+    this->addPropertyLink(this, "groupMotions", SIGNAL(groupMotionsChanged()), motions);
+  }
+
   auto* reset = new QPushButton(tr("Reset Handle"), this);
   reset->setObjectName("ResetHandle");
   reset->setToolTip(tr("Undo the current move: no translation, no rotation."));
@@ -96,6 +151,279 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
     &pqDeformationHandlePropertyWidget::leaveRendersToAutoApply);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
     &pqDeformationHandlePropertyWidget::restoreInteractionRenders);
+
+  QObject::connect(this, &pqInteractivePropertyWidgetAbstract::widgetVisibilityUpdated, this,
+    &pqDeformationHandlePropertyWidget::showGroupHandles);
+  if (auto* source =
+        pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(proxy))
+  {
+    QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated),
+      this, &pqDeformationHandlePropertyWidget::updateGroupHandles);
+  }
+  this->updateGroupHandles();
+}
+
+pqDeformationHandlePropertyWidget::~pqDeformationHandlePropertyWidget()
+{
+  while (!this->GroupHandles.empty())
+  {
+    this->removeLastGroupHandle();
+  }
+}
+
+void pqDeformationHandlePropertyWidget::setView(pqView* view)
+{
+  for (GroupHandle& handle : this->GroupHandles)
+  {
+    ShowInView(handle.Widget, this->view(), false);
+  }
+  this->Superclass::setView(view);
+  for (GroupHandle& handle : this->GroupHandles)
+  {
+    ShowInView(handle.Widget, this->view(), true);
+  }
+}
+
+QList<QVariant> pqDeformationHandlePropertyWidget::groupMotions() const
+{
+  QList<QVariant> values;
+  for (const auto& entry : this->GroupMotions)
+  {
+    values << static_cast<double>(entry.first);
+    for (double value : entry.second)
+    {
+      values << value;
+    }
+  }
+  return values;
+}
+
+void pqDeformationHandlePropertyWidget::setGroupMotions(const QList<QVariant>& values)
+{
+  this->GroupMotions.clear();
+  for (int i = 0; i + 7 <= values.size(); i += 7)
+  {
+    std::array<double, 6> motion;
+    for (int k = 0; k < 6; ++k)
+    {
+      motion[k] = values[i + 1 + k].toDouble();
+    }
+    this->GroupMotions[values[i].toInt()] = motion;
+  }
+  for (int g = 1; g <= static_cast<int>(this->GroupHandles.size()); ++g)
+  {
+    this->showGroupMotion(g);
+  }
+  this->render();
+}
+
+void pqDeformationHandlePropertyWidget::setGroupMotion(int group, const std::array<double, 6>& motion)
+{
+  this->GroupMotions[group] = motion;
+  this->showGroupMotion(group);
+  Q_EMIT this->groupMotionsChanged();
+}
+
+void pqDeformationHandlePropertyWidget::clearGroupMotions()
+{
+  if (!this->GroupMotions.empty())
+  {
+    this->setGroupMotions({});
+    Q_EMIT this->groupMotionsChanged();
+  }
+}
+
+bool pqDeformationHandlePropertyWidget::anyGroupMoved() const
+{
+  return std::any_of(this->GroupMotions.begin(), this->GroupMotions.end(), [](const auto& entry) {
+    return std::any_of(
+      entry.second.begin(), entry.second.end(), [](double value) { return value != 0.0; });
+  });
+}
+
+void pqDeformationHandlePropertyWidget::showGroupMotion(int group)
+{
+  if (group < 1 || group > static_cast<int>(this->GroupHandles.size()))
+  {
+    return;
+  }
+  const auto found = this->GroupMotions.find(group);
+  const std::array<double, 6> motion =
+    found == this->GroupMotions.end() ? std::array<double, 6>{} : found->second;
+  GroupHandle& handle = this->GroupHandles[group - 1];
+  vtkSMPropertyHelper(handle.Widget, "Translation").Set(motion.data(), 3);
+  vtkSMPropertyHelper(handle.Widget, "Rotation").Set(motion.data() + 3, 3);
+  handle.Widget->UpdateVTKObjects();
+  for (int k = 0; k < 6; ++k)
+  {
+    handle.Fields[k]->setTextAndResetCursor(QString::number(motion[k], 'g', 17));
+  }
+}
+
+void pqDeformationHandlePropertyWidget::updateGroupHandles()
+{
+  // The filter reports its groups after an update; each further group's handle sits at the
+  // group's rest centroid, which only the filter's process knows.
+  vtkSMProxy* filter = this->proxy();
+  filter->UpdatePropertyInformation();
+  const int further =
+    std::max(0, vtkSMPropertyHelper(filter, "NumberOfHandleGroups", true).GetAsInt() - 1);
+  while (static_cast<int>(this->GroupHandles.size()) > further)
+  {
+    this->removeLastGroupHandle();
+  }
+  while (static_cast<int>(this->GroupHandles.size()) < further)
+  {
+    this->addGroupHandle();
+  }
+  // The first handle's size; array mode does not use it, so it may be unset (a source whose
+  // bounds were unknown): then 5% of the output's extent, as a new handle in VTK.
+  double radius = vtkSMPropertyHelper(filter, "HandleRadius").GetAsDouble();
+  if (!(radius > 0.0))
+  {
+    const vtkBoundingBox bounds(
+      vtkSMSourceProxy::SafeDownCast(filter)->GetDataInformation(0)->GetBounds());
+    radius = bounds.IsValid() ? 0.05 * bounds.GetDiagonalLength() : 1.0;
+  }
+  for (int g = 1; g <= further; ++g)
+  {
+    vtkClientServerStream stream;
+    stream << vtkClientServerStream::Invoke << VTKOBJECT(filter) << "GetHandleGroupCenter" << g
+           << vtkClientServerStream::End;
+    filter->GetSession()->ExecuteStream(vtkPVSession::DATA_SERVER_ROOT, stream, false);
+    double center[3] = { 0.0, 0.0, 0.0 };
+    filter->GetSession()->GetLastResult(vtkPVSession::DATA_SERVER_ROOT).GetArgument(0, 0, center, 3);
+    vtkSMProxy* widget = this->GroupHandles[g - 1].Widget;
+    vtkSMPropertyHelper(widget, "Center").Set(center, 3);
+    vtkSMPropertyHelper(widget, "HandleRadius").Set(radius);
+    vtkSMPropertyHelper(widget, "ROIRadius").Set(radius);
+    this->showGroupMotion(g);
+  }
+}
+
+void pqDeformationHandlePropertyWidget::addGroupHandle()
+{
+  const int group = static_cast<int>(this->GroupHandles.size()) + 1;
+  GroupHandle handle;
+  handle.Widget.TakeReference(this->proxy()->GetSessionProxyManager()->NewProxy(
+    "representations", "DeformationHandleWidgetRepresentation"));
+  vtkNew<vtkSMParaViewPipelineController> controller;
+  controller->InitializeProxy(handle.Widget);
+  handle.Widget->PrototypeOn(); // as the panel's own widget: out of undo and state files
+  for (unsigned long event : { vtkCommand::StartInteractionEvent, vtkCommand::InteractionEvent,
+         vtkCommand::EndInteractionEvent })
+  {
+    handle.Widget->AddObserver(event, this, &pqDeformationHandlePropertyWidget::onGroupHandleEvent);
+  }
+  ShowInView(handle.Widget, this->view(), true);
+  vtkSMPropertyHelper(handle.Widget, "Visibility").Set(this->GroupHandlesVisible);
+  vtkSMPropertyHelper(handle.Widget, "Enabled").Set(this->GroupHandlesVisible);
+  handle.Widget->UpdateVTKObjects();
+
+  const int row = 2 * (group - 1);
+  const QString names[2] = { tr("Group %1 Translation").arg(group),
+    tr("Group %1 Rotation").arg(group) };
+  for (int line = 0; line < 2; ++line)
+  {
+    handle.Labels[line] = new QLabel(names[line], this);
+    this->GroupLayout->addWidget(handle.Labels[line], row + line, 0);
+    for (int i = 0; i < 3; ++i)
+    {
+      auto* edit = new pqDoubleLineEdit(this);
+      edit->setObjectName(QString("Group%1_%2").arg(group).arg(3 * line + i));
+      this->GroupLayout->addWidget(edit, row + line, 1 + i);
+      handle.Fields[3 * line + i] = edit;
+      QObject::connect(edit, &pqLineEdit::textChangedAndEditingFinished, this, [this, group]() {
+        std::array<double, 6> motion;
+        for (int k = 0; k < 6; ++k)
+        {
+          motion[k] = this->GroupHandles[group - 1].Fields[k]->text().toDouble();
+        }
+        this->setGroupMotion(group, motion);
+        Q_EMIT this->changeAvailable();
+        this->render();
+      });
+    }
+  }
+  this->GroupHandles.push_back(handle);
+}
+
+void pqDeformationHandlePropertyWidget::removeLastGroupHandle()
+{
+  GroupHandle& handle = this->GroupHandles.back();
+  handle.Widget->RemoveObservers(vtkCommand::StartInteractionEvent);
+  handle.Widget->RemoveObservers(vtkCommand::InteractionEvent);
+  handle.Widget->RemoveObservers(vtkCommand::EndInteractionEvent);
+  vtkSMPropertyHelper(handle.Widget, "Enabled").Set(0);
+  handle.Widget->UpdateVTKObjects();
+  ShowInView(handle.Widget, this->view(), false);
+  for (QWidget* field : handle.Fields)
+  {
+    delete field;
+  }
+  for (QWidget* label : handle.Labels)
+  {
+    delete label;
+  }
+  this->GroupHandles.pop_back();
+}
+
+void pqDeformationHandlePropertyWidget::showGroupHandles(bool visible)
+{
+  this->GroupHandlesVisible = visible;
+  for (GroupHandle& handle : this->GroupHandles)
+  {
+    vtkSMPropertyHelper(handle.Widget, "Visibility").Set(visible);
+    vtkSMPropertyHelper(handle.Widget, "Enabled").Set(visible);
+    handle.Widget->UpdateVTKObjects();
+  }
+}
+
+void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
+  vtkObject* caller, unsigned long event, void*)
+{
+  const auto found = std::find_if(this->GroupHandles.begin(), this->GroupHandles.end(),
+    [caller](const GroupHandle& handle) { return handle.Widget == caller; });
+  if (found == this->GroupHandles.end())
+  {
+    return;
+  }
+  const int group = static_cast<int>(found - this->GroupHandles.begin()) + 1;
+  vtkSMProxy* widget = found->Widget;
+  widget->UpdatePropertyInformation();
+  double center[3], rest[3];
+  vtkSMPropertyHelper(widget, "CenterInfo").Get(center, 3);
+  vtkSMPropertyHelper(widget, "Center").Get(rest, 3);
+  if (center[0] != rest[0] || center[1] != rest[1] || center[2] != rest[2])
+  {
+    // A click on the surface placed this handle too: only the first handle follows clicks.
+    vtkSMPropertyHelper(widget, "Center").Set(rest, 3);
+    this->showGroupMotion(group);
+    this->restoreInteractionRenders();
+    return;
+  }
+  // As the first handle's drags: Auto Apply applies every move and renders alone meanwhile.
+  // (The first handle's start and end signals would also commit on a placement: not here.)
+  if (event == vtkCommand::StartInteractionEvent)
+  {
+    this->leaveRendersToAutoApply();
+    return;
+  }
+  std::array<double, 6> motion;
+  vtkSMPropertyHelper(widget, "TranslationInfo").Get(motion.data(), 3);
+  vtkSMPropertyHelper(widget, "RotationInfo").Get(motion.data() + 3, 3);
+  this->GroupMotions[group] = motion;
+  for (int k = 0; k < 6; ++k)
+  {
+    found->Fields[k]->setTextAndResetCursor(QString::number(motion[k], 'g', 17));
+  }
+  Q_EMIT this->groupMotionsChanged();
+  Q_EMIT this->changeAvailable();
+  Q_EMIT this->changeFinished();
+  if (event == vtkCommand::EndInteractionEvent)
+  {
+    this->restoreInteractionRenders();
+  }
 }
 
 void pqDeformationHandlePropertyWidget::leaveRendersToAutoApply()
@@ -139,7 +467,7 @@ void pqDeformationHandlePropertyWidget::rememberEdit()
   vtkSMPropertyHelper(widget, "CenterInfo").Get(this->StartCenter, 3);
   vtkSMPropertyHelper(widget, "TranslationInfo").Get(translation, 3);
   vtkSMPropertyHelper(widget, "RotationInfo").Get(rotation, 3);
-  this->StartMoved = false;
+  this->StartMoved = this->anyGroupMoved();
   for (int i = 0; i < 3; ++i)
   {
     this->StartMoved = this->StartMoved || translation[i] != 0.0 || rotation[i] != 0.0;
@@ -160,6 +488,7 @@ void pqDeformationHandlePropertyWidget::commitBeforePlacing()
   if (placed && this->StartMoved)
   {
     this->proxy()->InvokeCommand("CommitEdit");
+    this->clearGroupMotions(); // the commit rested them
   }
 }
 
@@ -188,6 +517,7 @@ void pqDeformationHandlePropertyWidget::resetHandle()
   vtkSMProxy* widget = this->widgetProxy();
   vtkSMPropertyHelper(widget, "Translation").Set(zero, 3);
   vtkSMPropertyHelper(widget, "Rotation").Set(zero, 3);
+  this->clearGroupMotions();
   this->pushWidgetChange();
 }
 
@@ -197,6 +527,7 @@ void pqDeformationHandlePropertyWidget::commitEdit()
   // its centre with the handle; the proxy's values are set to the same, so that the next Apply
   // does not move the handle again.
   this->proxy()->InvokeCommand("CommitEdit");
+  this->clearGroupMotions();
   vtkSMProxy* widget = this->widgetProxy();
   double center[3], translation[3];
   vtkSMPropertyHelper(widget, "Center").Get(center, 3);

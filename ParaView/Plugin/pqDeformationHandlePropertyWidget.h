@@ -11,21 +11,46 @@
  * an edit in progress is committed first, as in VTK.
  * Commit Edit makes the current result the rest shape of the next edit; Reset Handle undoes the
  * current move.
+ *
+ * In array mode, each further handle group (array values 3, 4, ...) gets a handle of its own in
+ * the view, at the group's rest centroid, and a translation and a rotation field in the panel:
+ * they drive the group's entry in HandleGroupMotions. A click on the surface moves only the
+ * first handle.
  */
 #ifndef pqDeformationHandlePropertyWidget_h
 #define pqDeformationHandlePropertyWidget_h
 
 #include "pqInteractivePropertyWidget.h"
 
+#include <QList>
+#include <QVariant>
+
+#include <array>
+#include <map>
+#include <vector>
+
+class pqDoubleLineEdit;
+class QGridLayout;
+
 class pqDeformationHandlePropertyWidget : public pqInteractivePropertyWidget
 {
   Q_OBJECT
   typedef pqInteractivePropertyWidget Superclass;
+  // HandleGroupMotions: seven numbers a group (the group, translation, rotation angles).
+  Q_PROPERTY(QList<QVariant> groupMotions READ groupMotions WRITE setGroupMotions NOTIFY
+      groupMotionsChanged)
 
 public:
   pqDeformationHandlePropertyWidget(
     vtkSMProxy* proxy, vtkSMPropertyGroup* group, QWidget* parent = nullptr);
-  ~pqDeformationHandlePropertyWidget() override = default;
+  ~pqDeformationHandlePropertyWidget() override;
+
+  void setView(pqView* view) override;
+  QList<QVariant> groupMotions() const;
+  void setGroupMotions(const QList<QVariant>& values);
+
+Q_SIGNALS:
+  void groupMotionsChanged();
 
 protected Q_SLOTS:
   // Nothing: the handle stays where the filter's properties put it when the panel is shown.
@@ -37,10 +62,30 @@ protected Q_SLOTS:
   void commitBeforePlacing();
   void leaveRendersToAutoApply();
   void restoreInteractionRenders();
+  // After the filter updated: one handle per further group, at its rest centroid.
+  void updateGroupHandles();
+  void showGroupHandles(bool visible);
 
 private:
   // Sets widget properties, then tells the panel (and Auto Apply) that they changed.
   void pushWidgetChange();
+  void addGroupHandle();
+  void removeLastGroupHandle();
+  // A group handle's widget events: its motion goes to the group's entry.
+  void onGroupHandleEvent(vtkObject* caller, unsigned long event, void*);
+  // Puts the stored motion of group `group` in its widget and its fields.
+  void showGroupMotion(int group);
+  void setGroupMotion(int group, const std::array<double, 6>& motion);
+  void clearGroupMotions();
+  bool anyGroupMoved() const;
+
+  struct GroupHandle;
+  // Groups 1, 2, ...: GroupHandles[g - 1].
+  std::vector<GroupHandle> GroupHandles;
+  // Every group's motion, as in HandleGroupMotions (also those without a handle yet).
+  std::map<int, std::array<double, 6>> GroupMotions;
+  QGridLayout* GroupLayout = nullptr;
+  bool GroupHandlesVisible = false;
 
   Q_DISABLE_COPY(pqDeformationHandlePropertyWidget)
   // At the start of an interaction: the rest centre, and whether the handle had moved.

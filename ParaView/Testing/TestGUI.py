@@ -7,7 +7,9 @@ interactor, as Qt would:
   - a drag of the sphere moves the handle with the cursor, and, once applied, the output's
     handle points, with no refactorization;
   - a sweep along the handle's z ring (not the view axis) turns it by the angle swept;
-  - a click on the surface puts the handle centre on the clicked point and commits the edit.
+  - a click on the surface puts the handle centre on the clicked point and commits the edit;
+  - in array mode with a second handle group, that group's own handle appears at its centroid,
+    and a drag of it moves the group's points (HandleGroupMotions) with the cursor.
 Quits with the result (and writes it to LAPLACIAN_GUI_OUTPUT.result)."""
 import math
 import os
@@ -75,7 +77,7 @@ try:
 
     def unchecked(name):
         prop = deform.GetProperty(name).SMProperty
-        return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfElements())]
+        return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfUncheckedElements())]
 
     def apply():
         for name in ("HandleCenter", "HandleTranslation", "HandleRotation"):
@@ -170,6 +172,65 @@ try:
     check(unchecked("HandleTranslation") == [0.0, 0.0, 0.0] and unchecked("HandleRotation") == [0.0, 0.0, 0.0],
           "the new handle starts at rest")
     check(info("NumberOfCommits") == 1, "the edit in progress was committed")
+
+    # 4. Array mode with two handle groups: the north cap (label 2) and a patch on the equator
+    #    (label 3), in an ROI of the upper half. Drag the second group's own handle 40 pixels up.
+    from paraview import servermanager
+    from paraview.simple import Hide, SetActiveSource, Show, TrivialProducer, LaplacianDeformation
+    from vtkmodules.vtkCommonCore import vtkIntArray
+
+    rest = servermanager.Fetch(deform.Input)
+    labeled = rest.NewInstance()
+    labeled.ShallowCopy(rest)
+    labels = vtkIntArray()
+    labels.SetName("Labels")
+    group = []
+    for i in range(rest.GetNumberOfPoints()):
+        x, y, z = rest.GetPoint(i)
+        label = 2 if z > 0.45 else (3 if abs(z) < 0.06 and x > 0.3 and abs(y) < 0.15 else (1 if z > -0.3 else 0))
+        labels.InsertNextValue(label)
+        if label == 3:
+            group.append(i)
+    labeled.GetPointData().AddArray(labels)
+    producer = TrivialProducer()
+    producer.GetClientSideObject().SetOutput(labeled)
+    Hide(deform, view)
+    groups = LaplacianDeformation(Input=producer, SelectionMode="Array", SelectionArray=["POINTS", "Labels"])
+    deform = groups  # for info() and unchecked()
+    scene.role_colors(Show(groups, view))
+    SetActiveSource(groups)
+    Render(view)
+    check(info("NumberOfHandleGroups") == 2, f"the filter reports two handle groups ({info('NumberOfHandleGroups')})")
+    centroid = [sum(rest.GetPoint(i)[k] for i in group) / len(group) for k in range(3)]
+    ResetCamera(view)
+    camera.SetFocalPoint(*centroid)
+    camera.Dolly(2.5)
+    renderer.ResetCameraClippingRange()
+    Render(view)
+
+    def group_points_center():
+        edited = groups.GetClientSideObject().GetOutput()
+        return [sum(edited.GetPoint(i)[k] for i in group) / len(group) for k in range(3)]
+
+    before = group_points_center()
+    factorizations = info("NumberOfFactorizations")
+    at = display(centroid)
+    settings.AutoApply = 1
+    drag(lambda t: (at[0], at[1] + 40.0 * t))
+    settings.AutoApply = 0
+    motions = unchecked("HandleGroupMotions")
+    say(f"group drag: HandleGroupMotions {motions}, group of {len(group)} points at {centroid}")
+    check(len(motions) == 7 and motions[0] == 1.0, "the drag gives group 1 a motion")
+    if len(motions) == 7:
+        landed = display([c + t for c, t in zip(centroid, motions[1:4])])
+        check(abs(landed[0] - at[0]) < 2.0 and abs(landed[1] - at[1] - 40.0) < 2.0,
+              f"a drag of the group's handle moves it with the cursor ({landed} for {(at[0], at[1] + 40.0)})")
+        groups.HandleGroupMotions = motions
+        Render(view)
+        shift = [a - b for a, b in zip(group_points_center(), before)]
+        check(max(abs(s - e) for s, e in zip(shift, motions[1:4])) < 2e-3,
+              f"the group's points follow its handle once applied ({shift} for {motions[1:4]})")
+    check(info("NumberOfFactorizations") == factorizations, "the group drag does not refactor")
 except Exception:  # any error must end the run, not open a modal dialog that never closes
     failures.append(traceback.format_exc())
     say(failures[-1])
