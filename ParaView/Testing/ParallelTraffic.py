@@ -8,7 +8,10 @@ about 30k vertices), three times each: the pieces alone, the setup, and the setu
 moves. Open MPI's monitoring component (`--mca pml_monitoring_enable 2`) counts every byte each
 rank sends, point to point and collective, ParaView's own messages included. The setup's bytes
 are the second run's less the first's; a move's are the third run's less the second's, over
-ten. Prints the first rank's lines and one JSON line per rank count."""
+ten. Prints the first rank's lines and one JSON line per rank count.
+
+With LAPLACIAN_TRAFFIC_LIMIT=F set, it fails if the setup or a move moves more than F of the
+surface's size, taken as 100 bytes a point (coordinates, normals and two triangles)."""
 import glob
 import json
 import os
@@ -47,15 +50,22 @@ def run(ranks, moves):
     return sent, first
 
 
+limit = float(os.environ.get("LAPLACIAN_TRAFFIC_LIMIT", "inf"))
+failed = False
 for ranks in rank_counts:
     base, _ = run(ranks, -1)
     setup, _ = run(ranks, 0)
     moved, line = run(ranks, 10)
     print(line.strip(), flush=True)
     numbers = dict(re.findall(r"(peak|setup|a move) ([\d.]+)", line))
-    print(json.dumps({"ranks": ranks, "points": int(theta) * (int(phi) - 2) + 2,
+    points = int(theta) * (int(phi) - 2) + 2
+    if max(setup - base, (moved - setup) / 10.0) > limit * 100 * points:
+        print(f"FAILED: {ranks} ranks moved more than {limit} of the surface", flush=True)
+        failed = True
+    print(json.dumps({"ranks": ranks, "points": points,
                       "roi_vertices": int(re.search(r"'NumberOfROIVertices': (\d+)", line).group(1)),
                       "setup_bytes": setup - base, "bytes_per_move": (moved - setup) / 10.0,
                       "first_rank_peak_mb": float(numbers["peak"]),
                       "setup_seconds": float(numbers["setup"]), "move_ms": float(numbers["a move"])}),
           flush=True)
+sys.exit(1 if failed else 0)
