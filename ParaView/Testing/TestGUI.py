@@ -231,6 +231,21 @@ try:
         check(max(abs(s - e) for s, e in zip(shift, motions[1:4])) < 2e-3,
               f"the group's points follow its handle once applied ({shift} for {motions[1:4]})")
     check(info("NumberOfFactorizations") == factorizations, "the group drag does not refactor")
+
+    def enabled_handles():
+        hidden = view.SMProxy.GetProperty("HiddenRepresentations")
+        widgets = [hidden.GetProxy(k) for k in range(hidden.GetNumberOfProxies())]
+        return sum(1 for w in widgets if w.GetXMLName() == "DeformationHandleWidgetRepresentation"
+                   and w.GetProperty("Enabled").GetElement(0))
+
+    check(enabled_handles() == 2, f"the view shows a handle for each group ({enabled_handles()})")
+    groups.SelectionMode = "Geodesic"
+    groups.HandleCenter = [0.0, 0.0, 0.5]
+    groups.HandleRadius, groups.ROIRadius = 0.1, 0.6
+    Render(view)
+    check(info("NumberOfHandleGroups") == 1 and enabled_handles() == 1,
+          f"without the groups, their handles leave the view ({info('NumberOfHandleGroups')} groups, "
+          f"{enabled_handles()} handles)")
 except Exception:  # any error must end the run, not open a modal dialog that never closes
     failures.append(traceback.format_exc())
     say(failures[-1])
