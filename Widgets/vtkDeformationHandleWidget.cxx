@@ -397,6 +397,10 @@ void vtkDeformationHandleWidget::WatchClick(
 
 void vtkDeformationHandleWidget::ClickAction(int x, int y)
 {
+  if (this->HandleGroup != 0)
+  {
+    return; // a further group turns about its centroid: a click places only group 0's handle
+  }
   // The picked point is resolved after the commit, so that it is the point as the user sees
   // it: the committed rest shape is the edited one.
   vtkIdType pointId = -1;

@@ -48,7 +48,8 @@
  * each, all paired with the same filter: SetHandleGroup(g) makes a widget drive group g's
  * transform. A commit or undo through any of them, or through the filter, puts every paired
  * handle at rest. Only group 0 has a handle and region of its own (HandleCenter and the radii),
- * so the widgets of other groups do not move or resize the region: a click moves their pivot.
+ * so the widgets of other groups neither move nor resize the region, and a click places only
+ * group 0's handle: the others keep their pivot at their group's centroid.
  *
  * @sa vtkDeformationHandleRepresentation vtkLaplacianDeformationFilter
  */

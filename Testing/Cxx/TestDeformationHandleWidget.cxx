@@ -770,6 +770,27 @@ int TwoHandleGroups()
   const double restored = MaxPointDistance(scene.Rest, scene.Filter->GetOutput());
   std::cout << "after the undo, off the input by " << restored << "\n";
   Check(restored < 1e-9, "an undo restores the input");
+
+  // A click on the surface between the handles places the first handle there; the second
+  // keeps its pivot at its group's centroid.
+  double target[3], pivotBefore[3], at[2];
+  scene.Rest->GetPoint(scene.Rest->FindPoint(0.5, 0.25, 0.0), target);
+  reps[1]->GetCurrentCenter(pivotBefore);
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Window->Render();
+  scene.Display(target, at);
+  scene.Play(Event("MouseMoveEvent", at[0], at[1]) + Event("LeftButtonPressEvent", at[0], at[1]) +
+    Event("LeftButtonReleaseEvent", at[0], at[1]));
+  double placed[3], pivotAfter[3];
+  reps[0]->GetCurrentCenter(placed);
+  reps[1]->GetCurrentCenter(pivotAfter);
+  std::cout << "click: first handle " << std::sqrt(vtkMath::Distance2BetweenPoints(placed, target))
+            << " from the clicked point, second pivot moved by "
+            << std::sqrt(vtkMath::Distance2BetweenPoints(pivotBefore, pivotAfter)) << "\n";
+  Check(std::sqrt(vtkMath::Distance2BetweenPoints(placed, target)) < 1e-9,
+    "a click places the first handle");
+  Check(std::sqrt(vtkMath::Distance2BetweenPoints(pivotBefore, pivotAfter)) < 1e-12,
+    "a click leaves the other group's pivot at its centroid");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
