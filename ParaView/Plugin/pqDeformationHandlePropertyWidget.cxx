@@ -6,10 +6,10 @@
 #include "pqPointPickingHelper.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
+#include "vtkBoundingBox.h"
 #include "vtkClientServerStream.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
-#include "vtkBoundingBox.h"
 #include "vtkPVDataInformation.h"
 #include "vtkPVGeneralSettings.h"
 #include "vtkPVSession.h"
@@ -247,17 +247,24 @@ void pqDeformationHandlePropertyWidget::showGroupMotion(int group)
   {
     return;
   }
+  const std::array<double, 6> motion = this->showGroupFields(group);
+  vtkSMProxy* widget = this->GroupHandles[group - 1].Widget;
+  vtkSMPropertyHelper(widget, "Translation").Set(motion.data(), 3);
+  vtkSMPropertyHelper(widget, "Rotation").Set(motion.data() + 3, 3);
+  widget->UpdateVTKObjects();
+}
+
+std::array<double, 6> pqDeformationHandlePropertyWidget::showGroupFields(int group)
+{
   const auto found = this->GroupMotions.find(group);
   const std::array<double, 6> motion =
     found == this->GroupMotions.end() ? std::array<double, 6>{} : found->second;
-  GroupHandle& handle = this->GroupHandles[group - 1];
-  vtkSMPropertyHelper(handle.Widget, "Translation").Set(motion.data(), 3);
-  vtkSMPropertyHelper(handle.Widget, "Rotation").Set(motion.data() + 3, 3);
-  handle.Widget->UpdateVTKObjects();
   for (int k = 0; k < 6; ++k)
   {
-    handle.Fields[k]->setTextAndResetCursor(QString::number(motion[k], 'g', 17));
+    this->GroupHandles[group - 1].Fields[k]->setTextAndResetCursor(
+      QString::number(motion[k], 'g', 17));
   }
+  return motion;
 }
 
 void pqDeformationHandlePropertyWidget::updateGroupHandles()
@@ -413,10 +420,7 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
   vtkSMPropertyHelper(widget, "TranslationInfo").Get(motion.data(), 3);
   vtkSMPropertyHelper(widget, "RotationInfo").Get(motion.data() + 3, 3);
   this->GroupMotions[group] = motion;
-  for (int k = 0; k < 6; ++k)
-  {
-    found->Fields[k]->setTextAndResetCursor(QString::number(motion[k], 'g', 17));
-  }
+  this->showGroupFields(group); // the widget already shows it
   Q_EMIT this->groupMotionsChanged();
   Q_EMIT this->changeAvailable();
   Q_EMIT this->changeFinished();

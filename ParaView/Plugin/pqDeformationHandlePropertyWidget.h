@@ -73,8 +73,10 @@ private:
   void removeLastGroupHandle();
   // A group handle's widget events: its motion goes to the group's entry.
   void onGroupHandleEvent(vtkObject* caller, unsigned long event, void*);
-  // Puts the stored motion of group `group` in its widget and its fields.
+  // Puts the stored motion of group `group` in its widget and its fields; in its fields only,
+  // returning it.
   void showGroupMotion(int group);
+  std::array<double, 6> showGroupFields(int group);
   void setGroupMotion(int group, const std::array<double, 6>& motion);
   void clearGroupMotions();
   bool anyGroupMoved() const;
