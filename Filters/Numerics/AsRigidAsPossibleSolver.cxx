@@ -120,6 +120,20 @@ std::string AsRigidAsPossibleSolver::Build(
     }
     this->Offsets.push_back(static_cast<int>(this->Neighbors.size()));
   }
+  auto isHandle = [&](int row) { return row < n && this->HandleGroups[row] >= 0; };
+  this->AroundHandles.clear();
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    bool touches = isHandle(i);
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1] && !touches; ++k)
+    {
+      touches = isHandle(this->Neighbors[k]);
+    }
+    if (touches)
+    {
+      this->AroundHandles.push_back(i);
+    }
+  }
 
   // Unknowns: the ROI without its handles.
   this->FreeRows.clear();
@@ -202,16 +216,19 @@ void AsRigidAsPossibleSolver::Patch(const Positions& roiPositions, std::vector<V
 
 double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
   std::vector<Eigen::Matrix3d>& rotations, Quaternions& quaternions, ArapIterate::Workspace& work,
-  const ParallelFor& loop) const
+  const ParallelFor& loop, const std::vector<int>* only) const
 {
   rotations.resize(this->NumberOfEnergyVertices);
   const bool seed = static_cast<int>(quaternions.size()) != this->NumberOfEnergyVertices;
   quaternions.resize(this->NumberOfEnergyVertices);
   std::vector<double>& residuals = work.Residuals;
-  residuals.assign(this->NumberOfEnergyVertices, 0.0);
-  loop(0, this->NumberOfEnergyVertices, [&](int first, int last) {
-    for (int i = first; i < last; ++i)
+  residuals.resize(this->NumberOfEnergyVertices);
+  only = seed ? nullptr : only; // rotations with no history are seeded everywhere
+  const int count = only ? static_cast<int>(only->size()) : this->NumberOfEnergyVertices;
+  loop(0, count, [&](int first, int last) {
+    for (int item = first; item < last; ++item)
     {
+      const int i = only ? (*only)[item] : item;
       // The covariance sum w e e'^T is S^T for the deformation S mapping e to e'.
       Eigen::Matrix3d deformation = Eigen::Matrix3d::Zero();
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
@@ -224,6 +241,7 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
         quaternions[i] = PolarRotation(deformation);
       }
       rotations[i] = ClosestRotation(deformation, quaternions[i]);
+      residuals[i] = 0.0;
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
         residuals[i] += this->Weights[k] *
@@ -282,6 +300,7 @@ ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& 
     guess.Points.row(this->FreeRows[u]) = free.row(u);
   }
   guess.Rotations.clear(); // those of the rest positions, not of the guess
+  guess.Work.RotationsFitPoints = false;
   return guess;
 }
 
@@ -291,6 +310,12 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
 {
   Positions& roiPositions = iterate.Points;
   Quaternions& quaternions = iterate.Rotations;
+  ArapIterate::Workspace& work = iterate.Work;
+  // Between solves only the handle rows move: where the last solve's rotations fit the points,
+  // the first local step redoes only the rotations around the handles (the others would come
+  // out the same).
+  const bool aroundHandles = work.RotationsFitPoints;
+  work.RotationsFitPoints = false;
   for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {
     const int group = this->HandleGroups[k];
@@ -317,11 +342,12 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
       roi.row(this->FreeRows[u]) = x.row(u);
     }
   };
-  ArapIterate::Workspace& work = iterate.Work;
   std::vector<Eigen::Matrix3d>& rotations = work.Rotations;
   std::vector<Vector3>& patch = work.Patch;
   this->Patch(roiPositions, patch);
-  result.Energy = this->Rotate(patch, rotations, quaternions, work, loop);
+  result.Energy = this->Rotate(
+    patch, rotations, quaternions, work, loop, aroundHandles ? &this->AroundHandles : nullptr);
+  work.RotationsFitPoints = true;
   if (free == 0 || options.MaximumIterations <= 0)
   {
     return result;

@@ -66,6 +66,9 @@ struct ArapIterate
     Eigen::VectorXd PreviousG;
     Eigen::VectorXd PreviousF;
     Eigen::VectorXd Residual;
+    // Whether Rotations, Residuals and the iterate's Rotations are those of its Points: a solve
+    // leaves them so, and the next one recomputes only around the handles it moves.
+    bool RotationsFitPoints = false;
   } Work;
 };
 
@@ -98,9 +101,11 @@ private:
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
   void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
-  // SVDs where empty). Returns the energy.
+  // SVDs where empty), or of `only` those, the others' rotations and residuals kept. Returns
+  // the energy.
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
-    Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop) const;
+    Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop,
+    const std::vector<int>* only = nullptr) const;
   // The global step: new free positions for the rotations.
   Eigen::MatrixXd Global(const std::vector<Eigen::Matrix3d>& rotations,
     const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const;
@@ -121,6 +126,8 @@ private:
   std::vector<int> UnknownOfPatch;
   // Per ROI row: its handle group, -1 for others.
   std::vector<int> HandleGroups;
+  // The energy vertices whose ring holds a handle row: the rotations a handle move changes.
+  std::vector<int> AroundHandles;
   SparseCholesky Factor;
 };
 }
