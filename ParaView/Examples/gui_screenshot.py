@@ -4,7 +4,8 @@ as-rigid-as-possible mode, the handle widget in the render view, the Handle pane
 Run by scripts/gui-screenshot, which starts `paraview --script` on this file under Xvfb with
 LAPLACIAN_DATA (the shared meshes) and LAPLACIAN_SCREEN (the X screen dump to write) set. The
 script sets up the scene and returns, so that the GUI paints; a helper process dumps the screen
-with xwd a few seconds later and closes ParaView. An error ends ParaView at once, with no dump."""
+with xwd a few seconds later and closes ParaView. An error, or an edit without a region, ends
+ParaView at once, with no dump."""
 import os
 import subprocess
 import traceback
@@ -44,6 +45,9 @@ try:
     ResetCamera(view)
     view.GetActiveCamera().Dolly(1.3)
     Render(view)
+    deform.UpdatePropertyInformation()
+    if deform.GetProperty("NumberOfROIVertices").GetData() <= 0:
+        raise RuntimeError("the edit failed: no region")
 except Exception:  # end the run: an error must not leave the GUI waiting
     traceback.print_exc()
     os._exit(1)
