@@ -37,6 +37,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -147,6 +148,9 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   std::vector<vtkSmartPointer<vtkLinearTransform>> HandleTransforms;
   // Group -> (translation, rotation) for groups 1 and above moved by properties.
   std::map<int, std::array<double, 6>> HandleGroupMotions;
+  // Per handle group of the current region: its rest centroid in mesh units, if it has
+  // vertices; found once per region, as moves and ParaView's panel read it every update.
+  std::vector<std::optional<std::array<double, 3>>> GroupCenters;
   // Committed rest shapes, newest last, for the input of the given MTime.
   std::vector<vtkSmartPointer<vtkPoints>> Commits;
   vtkMTimeType CommittedInput = 0;
@@ -737,6 +741,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   if (status.Work != le::RebuiltNothing)
   {
     internals.Surface.IndexRegion(internals.Editor.GetRegion());
+    this->FindGroupCenters();
     internals.Normals.Index(rest, surface);
     this->SetupTime = SecondsSince(start);
   }
@@ -911,26 +916,40 @@ bool vtkLaplacianDeformationFilter::GetRestPoint(vtkIdType id, double point[3])
   return true;
 }
 
-bool vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group, double center[3])
+void vtkLaplacianDeformationFilter::FindGroupCenters()
 {
-  const vtkInternals& internals = *this->Internals;
+  vtkInternals& internals = *this->Internals;
   const le::EditRegion& region = internals.Editor.GetRegion();
-  le::Vector3 sum = le::Vector3::Zero();
-  int count = 0;
+  std::vector<le::Vector3> sums(region.NumberOfHandleGroups, le::Vector3::Zero());
+  std::vector<int> counts(region.NumberOfHandleGroups, 0);
   for (std::size_t row = 0; row < region.HandleGroups.size(); ++row)
   {
-    if (region.HandleGroups[row] == group)
+    const int group = region.HandleGroups[row];
+    if (group >= 0 && group < region.NumberOfHandleGroups)
     {
-      sum += internals.Surface.GetMesh()->GetPositions()[region.Vertices[row]];
-      ++count;
+      sums[group] += internals.Surface.GetMesh()->GetPositions()[region.Vertices[row]];
+      ++counts[group];
     }
   }
-  if (count == 0)
+  internals.GroupCenters.assign(region.NumberOfHandleGroups, std::nullopt);
+  for (int group = 0; group < region.NumberOfHandleGroups; ++group)
+  {
+    if (counts[group] > 0)
+    {
+      const le::Vector3 mean = internals.Surface.Denormalize(sums[group] / counts[group]);
+      internals.GroupCenters[group] = std::array<double, 3>{ mean[0], mean[1], mean[2] };
+    }
+  }
+}
+
+bool vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group, double center[3])
+{
+  const auto& centers = this->Internals->GroupCenters;
+  if (group < 0 || group >= static_cast<int>(centers.size()) || !centers[group])
   {
     return false;
   }
-  const le::Vector3 mean = internals.Surface.Denormalize(sum / count);
-  std::copy(mean.data(), mean.data() + 3, center);
+  std::copy(centers[group]->begin(), centers[group]->end(), center);
   return true;
 }
 

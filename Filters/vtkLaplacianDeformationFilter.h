@@ -657,6 +657,8 @@ private:
   bool UpdateRegion(vtkPolyData* rest);
   bool UpdateRotationModel();
   void MapHandles();
+  // The handle groups' rest centroids, once per region (GetHandleGroupCenter reads them).
+  void FindGroupCenters();
   bool Solve();
   void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
   bool Fail(const std::string& message);
