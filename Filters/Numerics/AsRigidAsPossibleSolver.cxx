@@ -283,27 +283,6 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
   return this->Factor.Solve(rhs, loop);
 }
 
-ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
-{
-  ArapIterate guess;
-  guess.Points = this->RestPatch.topRows(this->NumberOfROIVertices);
-  ArapOptions none;
-  none.MaximumIterations = 0;
-  this->Solve(handleMaps, guess, none);
-  const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
-  this->Patch(guess.Points, guess.Work.Patch);
-  const Eigen::MatrixXd free = this->FreeRows.empty()
-    ? Eigen::MatrixXd()
-    : this->Global(identities, guess.Work.Patch, guess.Work, SerialFor);
-  for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
-  {
-    guess.Points.row(this->FreeRows[u]) = free.row(u);
-  }
-  guess.Rotations.clear(); // those of the rest positions, not of the guess
-  guess.Work.RotationsFitPoints = false;
-  return guess;
-}
-
 ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMaps,
   ArapIterate& iterate, const ArapOptions& options, const ParallelFor& loop,
   std::vector<double>* energies) const
@@ -426,5 +405,46 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     }
   }
   return result;
+}
+ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
+{
+  ArapIterate guess;
+  guess.Points = this->RestPatch.topRows(this->NumberOfROIVertices);
+  this->LocalStepOnly(handleMaps, guess, SerialFor);
+  const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
+  this->GlobalStep(identities, guess, SerialFor);
+  guess.Rotations.clear(); // those of the rest positions, not of the guess
+  return guess;
+}
+
+void AsRigidAsPossibleSolver::Straighten(
+  const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const
+{
+  iterate.Rotations.clear(); // exact rotations: the result depends on the points alone
+  this->LocalStepOnly(handleMaps, iterate, loop);
+  this->GlobalStep(iterate.Work.Rotations, iterate, loop);
+}
+
+void AsRigidAsPossibleSolver::LocalStepOnly(
+  const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const
+{
+  iterate.Work.RotationsFitPoints = false;
+  ArapOptions none;
+  none.MaximumIterations = 0;
+  this->Solve(handleMaps, iterate, none, loop);
+}
+
+void AsRigidAsPossibleSolver::GlobalStep(const std::vector<Eigen::Matrix3d>& rotations,
+  ArapIterate& iterate, const ParallelFor& loop) const
+{
+  if (!this->FreeRows.empty())
+  {
+    const Eigen::MatrixXd free = this->Global(rotations, iterate.Work.Patch, iterate.Work, loop);
+    for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
+    {
+      iterate.Points.row(this->FreeRows[u]) = free.row(u);
+    }
+  }
+  iterate.Work.RotationsFitPoints = false; // the rotations are those of the points before
 }
 }

@@ -307,6 +307,12 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
   const Eigen::SparseMatrix<double> normalMatrix = normal.UpperTriangle(plain.GetSquaredWeights());
   this->KnownRightHandSide = normal.GetRightHandSide();
+  this->RingOffsets = {};
+  this->RingRoiRows = {};
+  this->RingRest = {};
+  this->Fits = {};
+  this->FitOffsets = {};
+  this->RestDelta = {};
   const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
     options.MaximumFactorBytes, /*blockSize=*/3);
   if (!error.empty())
@@ -396,38 +402,5 @@ Positions ImplicitSimilaritySystem::SolveDirect(
   const Eigen::VectorXd rhs =
     this->KnownRightHandSide + Interleave(plain.ConstraintRightHandSide(handleMaps));
   return Deinterleave(this->Factor.Solve(rhs));
-}
-
-Eigen::VectorXd ImplicitSimilaritySystem::Ring(int row, const Positions& roiPositions) const
-{
-  const int begin = this->RingOffsets[row];
-  const int size = this->RingOffsets[row + 1] - begin;
-  Eigen::VectorXd ring(3 * size);
-  for (int q = 0; q < size; ++q)
-  {
-    const int member = this->RingRoiRows[begin + q];
-    ring.segment<3>(3 * q) = member >= 0 ? roiPositions.row(member).transpose()
-                                         : this->RingRest.row(begin + q).transpose();
-  }
-  return ring;
-}
-
-Positions ImplicitSimilaritySystem::RotatedDifferentialCoordinates(
-  const Positions& roiPositions, const ParallelFor& loop) const
-{
-  Positions rotated(this->NumberOfVertices, 3);
-  loop(0, this->NumberOfVertices, [&](int first, int last) {
-    for (int row = first; row < last; ++row)
-    {
-      const Eigen::Vector3d delta = this->RestDelta.row(row).transpose();
-      const Eigen::Vector3d transformed = ApplyToDelta(delta) *
-        (this->Fits[row] * this->Ring(row, roiPositions) + this->FitOffsets[row]);
-      const double length = transformed.norm();
-      const Eigen::Vector3d rescaled =
-        length > 0.0 ? Eigen::Vector3d(transformed * (delta.norm() / length)) : delta;
-      rotated.row(row) = rescaled.transpose();
-    }
-  });
-  return rotated;
 }
 }

@@ -51,22 +51,15 @@ public:
   /// The same through the factor's triangular solves (the reference for Solve).
   Positions SolveDirect(const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const;
 
-  /// T_i(V') delta_i for every ROI vertex, each scaled back to the length of delta_i: the
-  /// rotated differential coordinates without the linearization's change of scale.
-  Positions RotatedDifferentialCoordinates(
-    const Positions& roiPositions, const ParallelFor& loop = SerialFor) const;
-
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
   // Fits the transform of ROI vertex `row` to its rest one-ring (Fits and FitOffsets).
   void FitRing(int row, bool allowScaling);
 
-  // Gathers the one-ring positions of ROI vertex `row` (itself first) into a 3m vector.
-  Eigen::VectorXd Ring(int row, const Positions& roiPositions) const;
-
   int NumberOfVertices = 0;
-  // Per ROI vertex: offsets into the ring arrays and into the fit coefficients.
+  // Used while building only. Per ROI vertex: offsets into the ring arrays and into the fit
+  // coefficients.
   std::vector<int> RingOffsets;
   std::vector<int> RingRoiRows;   // ROI row of each ring member, -1 if fixed
   Positions RingRest;             // rest position of each ring member
@@ -75,6 +68,7 @@ private:
   // The constant part of each fit: (1, -fit of the rest ring) with s fixed, zero otherwise.
   std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>> FitOffsets;
   Positions RestDelta;
+  // The factor, the right-hand side and the responses are all a solve needs.
   SparseCholesky Factor;
   // A^T b of the known parts (fixed vertices): constant per region.
   Eigen::VectorXd KnownRightHandSide;

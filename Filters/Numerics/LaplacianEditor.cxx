@@ -68,7 +68,8 @@ EditStatus LaplacianEditor::Fail(bool rotationModel, RotationMode mode, std::str
   // What failed stays unbuilt; what was built before it stays valid.
   this->Ready = false;
   this->LastFailure.reset(new Failure{ this->RegionRequested, this->SystemRequested,
-    rotationModel, mode, this->RotationRequested.Formulation, error });
+    rotationModel, mode, this->RotationRequested.Formulation,
+    this->RotationRequested.PreserveDetailScale, error });
   EditStatus status;
   status.Error = std::move(error);
   return status;
@@ -146,7 +147,8 @@ EditStatus LaplacianEditor::UpdateRotationModel(const RotationOptions& rotation)
   }
   const Failure* failed = this->LastFailure.get();
   if (failed && failed->RotationModel && failed->Mode == rotation.Mode &&
-    failed->Formulation == rotation.Formulation)
+    failed->Formulation == rotation.Formulation &&
+    failed->PreserveDetailScale == rotation.PreserveDetailScale)
   {
     status.Error = failed->Error;
     return status;
@@ -188,16 +190,11 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
   }
   else if (rotation.Mode == RotationMode::AsRigidAsPossible && !this->Arap)
   {
-    auto arap = std::make_unique<AsRigidAsPossibleSolver>();
-    ++this->NumberOfFactorizationAttempts;
-    const std::string error = arap->Build(*this->Mesh, this->Region, this->SystemBuiltFrom);
+    const std::string error = this->BuildArap();
     if (!error.empty())
     {
       return error;
     }
-    this->Record(arap->GetFactor());
-    this->Arap = std::move(arap);
-    this->ArapWarmStart = {};
     built = true;
   }
   else if (rotation.Mode == RotationMode::Implicit &&
@@ -217,6 +214,32 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
     this->ImplicitBuiltWith = rotation.Formulation;
     built = true;
   }
+  if (rotation.Mode == RotationMode::Implicit && rotation.PreserveDetailScale && !this->Arap)
+  {
+    const std::string error = this->BuildArap();
+    if (!error.empty())
+    {
+      return "the implicit mode's rigid step (turn PreserveDetailScale off to skip it) needs "
+             "the as-rigid-as-possible system: " + error;
+    }
+    built = true;
+  }
+  return {};
+}
+
+std::string LaplacianEditor::BuildArap()
+{
+  auto arap = std::make_unique<AsRigidAsPossibleSolver>();
+  ++this->NumberOfFactorizationAttempts;
+  const std::string error = arap->Build(*this->Mesh, this->Region, this->SystemBuiltFrom);
+  if (!error.empty())
+  {
+    return error;
+  }
+  this->Record(arap->GetFactor());
+  this->Arap = std::move(arap);
+  this->ArapWarmStart = {};
+  this->Straightened = {};
   return {};
 }
 
@@ -244,9 +267,9 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
     roiPositions = this->Implicit->Solve(handleMaps, this->Loop);
     if (rotation.PreserveDetailScale)
     {
-      roiPositions = this->System.SolveWithDifferentialCoordinates(
-        this->Implicit->RotatedDifferentialCoordinates(roiPositions, this->Loop), handleMaps,
-        this->Loop);
+      this->Straightened.Points.swap(roiPositions);
+      this->Arap->Straighten(handleMaps, this->Straightened, this->Loop);
+      roiPositions = this->Straightened.Points;
     }
   }
   else

@@ -8,9 +8,9 @@
 //    (Section 7), rotate each delta by its local frame's rotation (Section 4), solve again with
 //    the same factor; each further iteration uses the previous result as the reference.
 //  - Implicit: solve the coupled system of linearized transforms (Section 5; see
-//    ImplicitSimilaritySystem.h). Optionally, rescale each transformed delta to its rest length
-//    and solve the Laplacian system once more (as Sorkine et al. 2004), which removes the
-//    linearization's growth of details under large rotations.
+//    ImplicitSimilaritySystem.h), then, by default, one local-global step of the
+//    as-rigid-as-possible energy from that result: the linearized rotations lengthen details
+//    under large turns, and the step's true rotations take the growth out.
 //  - AsRigidAsPossible: the local-global iteration of Sorkine and Alexa (2007) on its own square
 //    system; it needs no least-squares system (DeformationOptions::LeastSquares off). Each solve
 //    starts from the previous result of the same region, so a drag keeps converging.
@@ -70,8 +70,8 @@ struct RotationOptions
   double NormalSmoothingRadius = 0.1;
   /// Explicit mode: reference-rotate-solve passes (1 is the paper's method).
   int Iterations = 1;
-  /// Implicit mode: the rescaling pass.
-  bool PreserveDetailScale = false;
+  /// Implicit mode: the rigid correction (one as-rigid-as-possible step after the solve).
+  bool PreserveDetailScale = true;
   /// Implicit mode: which energy (see ImplicitSimilaritySystem.h).
   ImplicitFormulation Formulation;
   /// As-rigid-as-possible mode: the work per solve.
@@ -142,6 +142,7 @@ private:
   std::string SelectRegion(const RegionRequest& request,
     const std::function<std::vector<int>()>& labels);
   std::string BuildRotationModel(const RotationOptions& rotation, bool& built);
+  std::string BuildArap();
   EditStatus Fail(bool rotationModel, RotationMode mode, std::string error);
   void Record(const SparseCholesky& factor);
 
@@ -165,6 +166,8 @@ private:
   std::unique_ptr<AsRigidAsPossibleSolver> Arap;
   ArapIterate ArapWarmStart;
   ArapResult LastArap;
+  // Implicit mode's rigid correction: its buffers, kept between moves.
+  ArapIterate Straightened;
   // Implicit mode, and the formulation it was built with.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
   ImplicitFormulation ImplicitBuiltWith;
@@ -176,6 +179,7 @@ private:
     bool RotationModel = false;
     RotationMode Mode = RotationMode::None;
     ImplicitFormulation Formulation;
+    bool PreserveDetailScale = false;
     std::string Error;
   };
   std::unique_ptr<Failure> LastFailure;

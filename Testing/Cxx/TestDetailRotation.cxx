@@ -135,17 +135,17 @@ TEST_P(RigidMotion, ExplicitRotationsReproduceIt)
 
 namespace
 {
-// The rigid error of the implicit mode in `formulation`, without and with the rescaling pass.
+// The rigid error of the implicit mode in `formulation`, without and with the rigid step.
 std::array<double, 2> ImplicitRigidErrors(int formulation, double degrees)
 {
   auto sphere = CappedSphere();
   std::array<double, 2> errors;
-  for (int rescale = 0; rescale <= 1; ++rescale)
+  for (int straighten = 0; straighten <= 1; ++straighten)
   {
     auto filter = ArrayEdit(sphere, Filter::ROTATION_IMPLICIT);
     filter->SetImplicitFormulation(formulation);
-    filter->SetPreserveDetailScale(rescale);
-    errors[rescale] = RigidError(filter, sphere, degrees);
+    filter->SetPreserveDetailScale(straighten);
+    errors[straighten] = RigidError(filter, sphere, degrees);
   }
   return errors;
 }
@@ -154,55 +154,61 @@ std::array<double, 2> ImplicitRigidErrors(int formulation, double degrees)
 TEST_P(RigidMotion, ImplicitSimilaritiesReproduceSmallRotations)
 {
   // The linearized similarities are exact only to first order in the angle: required within
-  // 3e-3 of the diagonal at 10 degrees (1e-3 with the rescaling pass); larger angles are reported.
+  // 3e-3 of the diagonal at 10 degrees; the rigid step (PreserveDetailScale) must cut the error
+  // by 20% at every angle. Measured: 1.7e-3 -> 1.1e-3, 45 degrees 3.3e-2 -> 2.2e-2, 90 degrees
+  // 0.11 -> 0.083. (The earlier rescaling pass, 6.5e-4 at 10 degrees, re-solved the paper's
+  // per-vertex system and undid the per-edge energy's gains on real edits.)
   const double degrees = GetParam();
   const auto errors = ImplicitRigidErrors(Filter::IMPLICIT_PAPER, degrees);
-  std::printf("rigid %3.0f deg: implicit %.2e, implicit with rescaling %.2e\n", degrees,
+  std::printf("rigid %3.0f deg: implicit %.2e, implicit with the rigid step %.2e\n", degrees,
     errors[0], errors[1]);
   if (degrees <= 10.0)
   {
     EXPECT_LT(errors[0], 3e-3);
-    EXPECT_LT(errors[1], 1e-3);
   }
+  EXPECT_LT(errors[1], 0.8 * errors[0]);
 }
 
 TEST_P(RigidMotion, ImplicitPerEdgeRotationsReproduceSmallRotations)
 {
   // The default implicit energy fixes the scale, so a linearized rotation I + h x lengthens
   // details by about 1 + angle^2 / 2: required within 6e-3 of the diagonal at 10 degrees
-  // (measured 4.6e-3), and within 1e-3 with the rescaling pass, which removes that growth.
+  // (measured 4.6e-3); the rigid step, which takes that growth out, must cut the error by 20%
+  // at every angle (measured 2.1e-3; 45 degrees 8.9e-2 -> 4.8e-2, 90 degrees 0.31 -> 0.21). A
+  // rigid turn of the whole band converges slowly under local-global steps: ARAP mode, which
+  // iterates, reproduces it to 2e-10.
   const double degrees = GetParam();
   const auto errors = ImplicitRigidErrors(Filter::IMPLICIT_PER_EDGE, degrees);
-  std::printf("rigid %3.0f deg: implicit per edge %.2e, with rescaling %.2e\n", degrees,
+  std::printf("rigid %3.0f deg: implicit per edge %.2e, with the rigid step %.2e\n", degrees,
     errors[0], errors[1]);
   if (degrees <= 10.0)
   {
     EXPECT_LT(errors[0], 6e-3);
-    EXPECT_LT(errors[1], 1e-3);
   }
+  EXPECT_LT(errors[1], 0.8 * errors[0]);
 }
 
 INSTANTIATE_TEST_SUITE_P(Angles, RigidMotion, ::testing::Values(10.0, 45.0, 90.0));
 
-TEST(ImplicitScale, RescalingCorrectsTheScaleError)
+TEST(ImplicitScale, TheRigidStepCorrectsTheScaleError)
 {
-  // Under rotation the linearized similarities change the size of the details. Required: the
-  // rescaling pass leaves at most 60% of the scale error at 45 and 90 degrees (measured: none
-  // left at 45 degrees, half at 90).
+  // Under rotation the linearized rotations change the size of the details. Required: the
+  // rigid step leaves at most 40% of the scale error at 45 and 90 degrees (measured: 0.187 ->
+  // 0.054 at 45 degrees, 0.453 -> 0.050 at 90).
   auto sphere = CappedSphere();
   for (double degrees : { 45.0, 90.0 })
   {
     double scaleError[2];
-    for (int rescale = 0; rescale <= 1; ++rescale)
+    for (int straighten = 0; straighten <= 1; ++straighten)
     {
       auto filter = ArrayEdit(sphere, Filter::ROTATION_IMPLICIT);
-      filter->SetPreserveDetailScale(rescale);
+      filter->SetPreserveDetailScale(straighten);
       RigidError(filter, sphere, degrees);
-      scaleError[rescale] = std::abs(EquatorScale(sphere, filter->GetOutput()) - 1.0);
+      scaleError[straighten] = std::abs(EquatorScale(sphere, filter->GetOutput()) - 1.0);
     }
-    std::printf("rigid %3.0f deg: implicit scale error %.3f, with rescaling %.3f\n", degrees,
+    std::printf("rigid %3.0f deg: implicit scale error %.3f, with the rigid step %.3f\n", degrees,
       scaleError[0], scaleError[1]);
-    EXPECT_LT(scaleError[1], 0.6 * scaleError[0]) << degrees << " degrees";
+    EXPECT_LT(scaleError[1], 0.4 * scaleError[0]) << degrees << " degrees";
   }
 }
 
@@ -212,7 +218,7 @@ namespace
 // degrees, its left edge fixed. Returns the mean angle, in degrees, between each bump's axis
 // (base centroid to apex) and the normal of the surface under it (a plane fitted to the ring
 // just outside the bump).
-double MeanDetailAngle(int mode, int iterations = 1, bool rescale = true, double* worst = nullptr)
+double MeanDetailAngle(int mode, int iterations = 1, bool straighten = true, double* worst = nullptr)
 {
   vtkNew<vtkBumpyPlaneSource> source;
   source->SetResolution(80);
@@ -221,7 +227,7 @@ double MeanDetailAngle(int mode, int iterations = 1, bool rescale = true, double
     [](const double p[3]) { return p[0] < 0.03 ? 0 : (p[0] > 0.97 ? 2 : 1); });
   auto filter = ArrayEdit(plane, mode);
   filter->SetNumberOfIterations(iterations);
-  filter->SetPreserveDetailScale(rescale);
+  filter->SetPreserveDetailScale(straighten);
   vtkNew<vtkTransform> bend;
   bend->Translate(0.97, 0.5, 0.4);
   bend->RotateY(-60.0);
@@ -286,7 +292,8 @@ TEST(DetailOrientation, RotationsKeepBumpsUpright)
 {
   // Required: explicit rotations cut the mean bump tilt to under 15% of the value without
   // rotations, implicit ones to under 25%, and three explicit iterations do better than one.
-  // Measured: none 24.5 deg, explicit 2.0 (1.0 with 3 iterations), implicit 3.3 (4.0 rescaled).
+  // Measured: none 24.5 deg, explicit 2.1 (1.1 with 3 iterations), implicit 0.2 (1.3 with the
+  // rigid step).
   double worst[5];
   const double none = MeanDetailAngle(Filter::ROTATION_NONE, 1, true, &worst[0]);
   const double explicitOne = MeanDetailAngle(Filter::ROTATION_EXPLICIT, 1, true, &worst[1]);
@@ -294,10 +301,10 @@ TEST(DetailOrientation, RotationsKeepBumpsUpright)
   const double implicitPlain = MeanDetailAngle(Filter::ROTATION_IMPLICIT, 1, false, &worst[3]);
   const double implicitRescaled = MeanDetailAngle(Filter::ROTATION_IMPLICIT, 1, true, &worst[4]);
   std::printf("mean (max) bump tilt, degrees: none %.1f (%.1f), explicit %.1f (%.1f), "
-              "explicit x3 %.1f (%.1f), implicit %.1f (%.1f), implicit rescaled %.1f (%.1f)\n",
+              "explicit x3 %.1f (%.1f), implicit linear %.1f (%.1f), implicit %.1f (%.1f)\n",
     none, worst[0], explicitOne, worst[1], explicitThree, worst[2], implicitPlain, worst[3],
     implicitRescaled, worst[4]);
-  std::printf("ratios to none: explicit %.3f, implicit %.3f, implicit rescaled %.3f\n",
+  std::printf("ratios to none: explicit %.3f, implicit linear %.3f, implicit %.3f\n",
     explicitOne / none, implicitPlain / none, implicitRescaled / none);
   EXPECT_GT(none, 15.0); // the edit really tilts the surface under the bumps
   EXPECT_LT(explicitOne, 0.15 * none);
@@ -321,7 +328,8 @@ TEST_P(EveryMode, ReconstructsExactlyKeepsTheOutsideAndReusesTheFactor)
   filter->Update();
   EXPECT_LT(MaxPointDistance(input, filter->GetOutput()), 1e-9 * Diagonal(input));
   const int factorizations = filter->GetNumberOfFactorizations();
-  EXPECT_EQ(factorizations, GetParam() == Filter::ROTATION_IMPLICIT ? 2 : 1);
+  // The implicit mode adds its coupled system and its rigid step's Laplacian.
+  EXPECT_EQ(factorizations, GetParam() == Filter::ROTATION_IMPLICIT ? 3 : 1);
 
   for (int move = 1; move <= 4; ++move)
   {
@@ -362,11 +370,12 @@ TEST(RotationModes, SwitchingModesKeepsTheLaplacianFactor)
   EXPECT_EQ(filter->GetNumberOfFactorizations(), 1) << "iterations reuse the factor";
   filter->SetRotationModeToImplicit();
   filter->Update();
-  EXPECT_EQ(filter->GetNumberOfFactorizations(), 2) << "implicit mode factors its system once";
+  EXPECT_EQ(filter->GetNumberOfFactorizations(), 3)
+    << "implicit mode factors its system and its rigid step's Laplacian once";
   filter->PreserveDetailScaleOff();
   filter->SetRotationModeToNone();
   filter->Update();
   filter->SetRotationModeToImplicit();
   filter->Update();
-  EXPECT_EQ(filter->GetNumberOfFactorizations(), 2) << "and keeps it";
+  EXPECT_EQ(filter->GetNumberOfFactorizations(), 3) << "and keeps them";
 }

@@ -105,7 +105,11 @@ TEST_F(EditorCase, OnlyTheChangedPartIsRebuilt)
   EXPECT_EQ(this->Update(region), RebuiltNothing);
   this->Rotation.Mode = RotationMode::Implicit;
   EXPECT_EQ(this->Update(region), RebuiltRotationModel);
-  EXPECT_EQ(this->Editor.GetNumberOfFactorizations(), 3);
+  EXPECT_EQ(this->Editor.GetNumberOfFactorizations(), 4); // the coupled system, the rigid step's
+  this->Rotation.PreserveDetailScale = false;
+  EXPECT_EQ(this->Update(region), RebuiltNothing);
+  this->Rotation.PreserveDetailScale = true;
+  EXPECT_EQ(this->Update(region), RebuiltNothing);
   this->Rotation.Mode = RotationMode::Explicit;
   EXPECT_EQ(this->Update(region), RebuiltNothing);
   this->System.MaximumFactorBytes = 1e12; // a new limit is tried anew, with the models on it
