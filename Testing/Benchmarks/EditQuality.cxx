@@ -67,6 +67,7 @@ struct Mode
   int ARAPIterations = 20;
   double Convergence = 1e-3;
   bool Accelerate = true;
+  bool Linear = false; // implicit mode without its rigid step
 };
 
 // The panels of --picture: copies of the results, in order.
@@ -90,6 +91,7 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
   filter->SetARAPIterations(mode.ARAPIterations);
   filter->SetConvergence(mode.Convergence);
   filter->SetAcceleration(mode.Accelerate);
+  filter->SetPreserveDetailScale(!mode.Linear);
   if (mode.Rotation == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE)
   {
     filter->SetLaplacianWeightsToCotangent(); // as CGAL's ARAP and the measure
@@ -219,7 +221,8 @@ int main(int argc, char* argv[])
     { "explicit1", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "explicit5", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 5, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "implicit", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
-    { "implicit_paper", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PAPER },
+    { "implicit_linear", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE, 20, 1e-3, true, true },
+    { "implicit_paper", vtkLaplacianDeformationFilter::ROTATION_IMPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PAPER, 20, 1e-3, true, true },
     { "arap", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0 },
     { "arap_converged", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0, 1000, 1e-7 },
     { "arap_plain_converged", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0, 1000, 1e-7, false } };

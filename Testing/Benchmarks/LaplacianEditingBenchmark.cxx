@@ -3,7 +3,7 @@
 //   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F]
 //     [--handle F] [--translate DX DY DZ] [--moves N] [--order 1|2]
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
-//     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--rescale]
+//     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--linear]
 //     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
@@ -142,7 +142,7 @@ struct Options
   int Ordering = vtkLaplacianDeformationFilter::ORDERING_AUTOMATIC;
   int Mode = vtkLaplacianDeformationFilter::ROTATION_NONE;
   int Iterations = 1;
-  bool Rescale = false;
+  bool Linear = false;
   bool CompareCGAL = false;
   int ARAPIterations = 20;
   bool Help = false;
@@ -166,7 +166,7 @@ vertices: setup (selection, assembly, factorization) and handle moves. Prints on
   --mode none|explicit|implicit|arap   rotation mode (none)
   --iterations K          explicit mode's iterations (1)
   --arap-iterations K     as-rigid-as-possible iterations per move (20)
-  --rescale               implicit mode: PreserveDetailScale
+  --linear                implicit mode without its rigid step (PreserveDetailScale off)
   --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
   --help                  this text
 )";
@@ -225,8 +225,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.Iterations = std::atoi(next().c_str());
     else if (arg == "--arap-iterations")
       options.ARAPIterations = std::atoi(next().c_str());
-    else if (arg == "--rescale")
-      options.Rescale = true;
+    else if (arg == "--linear")
+      options.Linear = true;
     else if (arg == "--compare-cgal")
       options.CompareCGAL = true;
     else if (arg[0] != '-' && options.Mesh.empty())
@@ -297,7 +297,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   filter->SetOrdering(options.Ordering);
   filter->SetRotationMode(mode);
   filter->SetNumberOfIterations(iterations);
-  filter->SetPreserveDetailScale(options.Rescale);
+  filter->SetPreserveDetailScale(!options.Linear);
   filter->SetARAPIterations(options.ARAPIterations);
   vtkNew<vtkTransform> transform;
   filter->SetHandleTransform(transform);
