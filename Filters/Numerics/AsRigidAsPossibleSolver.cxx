@@ -1,5 +1,7 @@
 #include "AsRigidAsPossibleSolver.h"
 
+#include "ClosestRotation.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -9,42 +11,6 @@ namespace LaplacianEditing
 {
 namespace
 {
-// The rotation closest to A (the rotation of its polar decomposition), refined from `q` in place
-// (Mueller, Bender, Chentanez and Macklin, "A Robust Method to Extract the Rotational Part of
-// Deformations", MIG 2016). Each step lowers the local energy, and the rotation is warm-started
-// from the last iteration's, so a few steps per local step reach the same fixed point as an
-// exact SVD at a fraction of its cost.
-Eigen::Matrix3d ClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q)
-{
-  for (int step = 0; step < 4; ++step)
-  {
-    const Eigen::Matrix3d r = q.toRotationMatrix();
-    const Vector3 omega = (r.col(0).cross(a.col(0)) + r.col(1).cross(a.col(1)) +
-                            r.col(2).cross(a.col(2))) /
-      (std::abs(r.col(0).dot(a.col(0)) + r.col(1).dot(a.col(1)) + r.col(2).dot(a.col(2))) + 1e-12);
-    if (omega.squaredNorm() < 1e-20)
-    {
-      break;
-    }
-    // The rotation by omega, to first order: the iteration converges all the same.
-    q = Eigen::Quaterniond(1.0, 0.5 * omega.x(), 0.5 * omega.y(), 0.5 * omega.z()) * q;
-    q.normalize();
-  }
-  return q.toRotationMatrix();
-}
-
-// The rotation closest to A, exactly, through its SVD: the seed of a rotation with no history.
-Eigen::Quaterniond PolarRotation(const Eigen::Matrix3d& a)
-{
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(a, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d u = svd.matrixU();
-  if ((u * svd.matrixV().transpose()).determinant() < 0.0)
-  {
-    u.col(2) = -u.col(2); // a reflection: flip the direction of least stretch
-  }
-  return Eigen::Quaterniond(Eigen::Matrix3d(u * svd.matrixV().transpose()));
-}
-
 Vector3 Apply(const AffineMap& map, const Vector3& p)
 {
   return map.leftCols<3>() * p + map.col(3);
@@ -238,9 +204,9 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
       }
       if (seed)
       {
-        quaternions[i] = PolarRotation(deformation);
+        quaternions[i] = ClosestRotation(deformation);
       }
-      rotations[i] = ClosestRotation(deformation, quaternions[i]);
+      rotations[i] = RefineClosestRotation(deformation, quaternions[i]);
       residuals[i] = 0.0;
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {

@@ -109,8 +109,8 @@ private:
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
   void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
-  // SVDs where empty), or of `only` those, the others' rotations and residuals kept. Returns
-  // the energy.
+  // exact polar decompositions where empty), or of `only` those, the others' rotations and
+  // residuals kept. Returns the energy.
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
     Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop,
     const std::vector<int>* only = nullptr) const;

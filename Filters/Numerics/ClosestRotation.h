@@ -1,0 +1,23 @@
+// The rotation closest to a 3 x 3 matrix A in the Frobenius norm: the rotation factor of A's
+// polar decomposition, with a reflection turned into the nearest proper rotation. The
+// as-rigid-as-possible local step needs one per vertex and per iteration.
+#ifndef LaplacianEditing_ClosestRotation_h
+#define LaplacianEditing_ClosestRotation_h
+
+#include "Types.h"
+
+#include <Eigen/Geometry>
+
+namespace LaplacianEditing
+{
+/// Refines `q` in place towards the rotation closest to `a` by at most `steps` steps, and returns
+/// it as a matrix (Mueller, Bender, Chentanez and Macklin, "A Robust Method to Extract the
+/// Rotational Part of Deformations", MIG 2016). Each step lowers |a - R|, so a rotation
+/// warm-started from the last iteration's reaches the exact one in a few steps.
+Eigen::Matrix3d RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int steps = 4);
+
+/// The closest rotation, exactly: the seed of a rotation with no history.
+Eigen::Quaterniond ClosestRotation(const Eigen::Matrix3d& a);
+}
+
+#endif
