@@ -776,6 +776,15 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   if (status.Work != le::RebuiltNothing)
   {
     this->SetupTime += SecondsSince(start);
+    const bool firstOrderEnergy = this->RotationMode == ROTATION_AS_RIGID_AS_POSSIBLE ||
+      (this->RotationMode == ROTATION_IMPLICIT && !paper);
+    if (this->OperatorOrder == 2 && firstOrderEnergy)
+    {
+      vtkWarningMacro(<< "OperatorOrder 2 has no effect in this rotation mode: its energy "
+                      << "compares one-ring edges, a first-order measure. The bi-Laplacian "
+                      << "applies in the None and Explicit modes and in the Paper implicit "
+                      << "formulation.");
+    }
   }
   if (this->SetupTime > 0.0)
   {

@@ -222,7 +222,9 @@ public:
 
   /**
    * Order of the differential operator: 1 (Laplacian, default) or 2 (bi-Laplacian, smoother
-   * transitions at the anchors).
+   * transitions at the anchors). It applies in the None and Explicit modes and in the Paper
+   * implicit formulation; the per-edge implicit energy and the as-rigid-as-possible energy
+   * compare one-ring edges, a first-order measure, and ignore it (with a warning).
    */
   vtkSetClampMacro(OperatorOrder, int, 1, 2);
   vtkGetMacro(OperatorOrder, int);

@@ -206,7 +206,19 @@ INSTANTIATE_TEST_SUITE_P(Cases, FeedbackWarning,
         f->SetHandleRadius(0.01 * 1e-3 * mesh->GetLength());
         f->SetROIRadius(0.08 * 1e-3 * mesh->GetLength());
       },
-      "single vertex" }),
+      "single vertex" },
+    UnlikelyRegion{ "SecondOrderInARAPMode",
+      [](vtkPolyData*, Filter* f) {
+        f->SetOperatorOrder(2);
+        f->SetRotationModeToAsRigidAsPossible();
+      },
+      "OperatorOrder 2 has no effect" },
+    UnlikelyRegion{ "SecondOrderInPerEdgeImplicitMode",
+      [](vtkPolyData*, Filter* f) {
+        f->SetOperatorOrder(2);
+        f->SetRotationModeToImplicit();
+      },
+      "OperatorOrder 2 has no effect" }),
   [](const ::testing::TestParamInfo<UnlikelyRegion>& info) { return info.param.Name; });
 
 TEST(Feedback, TheErrorCodeIsSetOnRefusalAndClearedOnTheNextGoodUpdate)
