@@ -764,6 +764,7 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   rotation.Arap.MaximumIterations = this->ARAPIterations;
   rotation.Arap.Tolerance = this->Convergence;
   rotation.Arap.Accelerate = this->Acceleration != 0;
+  rotation.Arap.Extrapolate = this->Extrapolation != 0;
 
   const Clock::time_point start = Clock::now();
   const le::EditStatus status = internals.Editor.UpdateRotationModel(rotation);
@@ -1020,6 +1021,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
+  os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";
   os << indent << "Solver: " << name(this->Solver, { "CHOLMOD", "SimplicialLDLT" }) << "\n";
   os << indent << "Ordering: "
      << name(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";

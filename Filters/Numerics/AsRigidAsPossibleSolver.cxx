@@ -256,11 +256,24 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   Positions& roiPositions = iterate.Points;
   Quaternions& quaternions = iterate.Rotations;
   ArapIterate::Workspace& work = iterate.Work;
-  // Between solves only the handle rows move: where the last solve's rotations fit the points,
-  // the first local step redoes only the rotations around the handles (the others would come
-  // out the same).
-  const bool aroundHandles = work.RotationsFitPoints;
+  // A solve that continues the last one (its rotations still fit the points) may extrapolate;
+  // otherwise only the handle rows move between solves, and the first local step redoes only
+  // the rotations around the handles (the others would come out the same).
+  const bool continues = work.RotationsFitPoints;
+  const bool extrapolate = continues && options.Extrapolate && options.MaximumIterations > 0 &&
+    iterate.Before.rows() == roiPositions.rows();
+  const bool aroundHandles = continues && !extrapolate;
   work.RotationsFitPoints = false;
+  if (extrapolate)
+  {
+    work.Candidate = roiPositions;
+    roiPositions += roiPositions - iterate.Before;
+    iterate.Before.swap(work.Candidate);
+  }
+  else
+  {
+    iterate.Before = roiPositions;
+  }
   for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {
     const int group = this->HandleGroups[k];

@@ -4,6 +4,7 @@
 //     [--handle F] [--translate DX DY DZ] [--moves N] [--order 1|2]
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
 //     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--linear]
+//     [--no-extrapolation]
 //     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
@@ -143,6 +144,7 @@ struct Options
   int Mode = vtkLaplacianDeformationFilter::ROTATION_NONE;
   int Iterations = 1;
   bool Linear = false;
+  bool Extrapolation = true;
   bool CompareCGAL = false;
   int ARAPIterations = 20;
   bool Help = false;
@@ -167,6 +169,7 @@ vertices: setup (selection, assembly, factorization) and handle moves. Prints on
   --iterations K          explicit mode's iterations (1)
   --arap-iterations K     as-rigid-as-possible iterations per move (20)
   --linear                implicit mode without its rigid step (PreserveDetailScale off)
+  --no-extrapolation      as-rigid-as-possible updates start from the last result itself
   --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
   --help                  this text
 )";
@@ -227,6 +230,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.ARAPIterations = std::atoi(next().c_str());
     else if (arg == "--linear")
       options.Linear = true;
+    else if (arg == "--no-extrapolation")
+      options.Extrapolation = false;
     else if (arg == "--compare-cgal")
       options.CompareCGAL = true;
     else if (arg[0] != '-' && options.Mesh.empty())
@@ -298,6 +303,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   filter->SetRotationMode(mode);
   filter->SetNumberOfIterations(iterations);
   filter->SetPreserveDetailScale(!options.Linear);
+  filter->SetExtrapolation(options.Extrapolation);
   filter->SetARAPIterations(options.ARAPIterations);
   vtkNew<vtkTransform> transform;
   filter->SetHandleTransform(transform);
