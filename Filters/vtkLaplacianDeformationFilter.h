@@ -236,16 +236,17 @@ public:
    * - Explicit: each is rotated by the rotation of a local frame built on smooth normals of a
    *   reference edit (Sections 4 and 7);
    * - Implicit: linearized similarity transforms are solved for together with the shape
-   *   (Section 5; see ImplicitFormulation); one larger coupled
-   *   system, factored once per region.
+   *   (Section 5; see ImplicitFormulation); one larger coupled system, factored once per
+   *   region, then by default one as-rigid-as-possible step (see PreserveDetailScale).
    * - AsRigidAsPossible: the local-global iteration of Sorkine and Alexa (2007), beyond the
    *   paper: each detail follows the best rotation of its one-ring, with the handles and the
    *   fixed part as hard constraints (anchors play no part). The best quality on large
    *   rotations; each update iterates (see ARAPIterations and Convergence) from the previous
-   *   result, so the shape keeps converging during a drag.
+   *   result (see Extrapolation), so the shape keeps converging during a drag.
    * Switching among the first three never refactors the Laplacian system; the first implicit
-   * solve of a region factors the coupled system. The as-rigid-as-possible mode factors its own
-   * square system (the weighted Laplacian of the free vertices) once per region.
+   * solve of a region factors the coupled system and the rigid step's Laplacian. The
+   * as-rigid-as-possible mode factors its own square system (the weighted Laplacian of the
+   * free vertices) once per region.
    */
   vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
   vtkGetMacro(RotationMode, int);

@@ -385,6 +385,7 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   }
   return result;
 }
+
 ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
 {
   ArapIterate guess;
