@@ -270,9 +270,9 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     roiPositions += roiPositions - iterate.Before;
     iterate.Before.swap(work.Candidate);
   }
-  else
+  else if (options.MaximumIterations > 0)
   {
-    iterate.Before = roiPositions;
+    iterate.Before = roiPositions; // a local step alone (Straighten) leaves nothing to continue
   }
   for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {

@@ -152,6 +152,47 @@ private:
   std::vector<Eigen::Matrix3d> Blocks;
   Eigen::VectorXd RightHandSide;
 };
+// Each ROI vertex's one-ring and the least-squares fit of its transform to it: what the normal
+// equations are assembled from, not needed once they are.
+struct RingFits
+{
+  // Per ROI vertex: offsets into the ring arrays and into the fit coefficients.
+  std::vector<int> Offsets;
+  std::vector<int> RoiRows; // ROI row of each ring member, -1 if fixed
+  Positions Rest;           // rest position of each ring member
+  // The (s, h1, h2, h3) rows of the least-squares fit, (A_i^T A_i)^-1 A_i^T, per vertex.
+  std::vector<Eigen::MatrixXd> Fits;
+  // The constant part of each fit: (1, -fit of the rest ring) with s fixed, zero otherwise.
+  std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>> FitOffsets;
+
+  // Fits the transform of ROI vertex `row` to its rest one-ring.
+  void Fit(int row, bool allowScaling);
+};
+
+void RingFits::Fit(int row, bool allowScaling)
+{
+  const int begin = this->Offsets[row];
+  const int size = this->Offsets[row + 1] - begin;
+  // Centre on the vertex for conditioning; the translation absorbs the shift.
+  Eigen::MatrixXd fitMatrix(3 * size, 7);
+  for (int q = 0; q < size; ++q)
+  {
+    fitMatrix.middleRows<3>(3 * q) =
+      FitBlock(this->Rest.row(begin + q) - this->Rest.row(begin));
+  }
+  this->Fits[row].setZero(4, 3 * size);
+  this->FitOffsets[row].setZero();
+  if (allowScaling)
+  {
+    this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
+    return;
+  }
+  // s = 1: fit (h, t) to what the rest ring, unscaled, leaves over.
+  const Eigen::MatrixXd fit =
+    fitMatrix.rightCols<6>().completeOrthogonalDecomposition().pseudoInverse().topRows(3);
+  this->Fits[row].bottomRows<3>() = fit;
+  this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
+}
 }
 
 std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
@@ -161,7 +202,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   const LaplacianOperator edgeWeights(mesh, options.Weights);
   const int n = region.GetNumberOfVertices();
   this->NumberOfVertices = n;
-  this->RestDelta = plain.GetRestDifferentialCoordinates();
+  const Positions& restDelta = plain.GetRestDifferentialCoordinates();
   const auto& positions = mesh.GetPositions();
   std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);
   for (int row = 0; row < n; ++row)
@@ -170,28 +211,29 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
 
   // Rings and fits.
-  this->RingOffsets.assign(1, 0);
-  this->RingRoiRows.clear();
+  RingFits rings;
+  rings.Offsets.assign(1, 0);
+  rings.RoiRows.clear();
   std::vector<int> ringVertices;
   for (int row = 0; row < n; ++row)
   {
     const int v = region.Vertices[row];
     ringVertices.push_back(v);
     ringVertices.insert(ringVertices.end(), mesh.NeighborsBegin(v), mesh.NeighborsEnd(v));
-    this->RingOffsets.push_back(static_cast<int>(ringVertices.size()));
+    rings.Offsets.push_back(static_cast<int>(ringVertices.size()));
   }
-  this->RingRest.resize(static_cast<Eigen::Index>(ringVertices.size()), 3);
+  rings.Rest.resize(static_cast<Eigen::Index>(ringVertices.size()), 3);
   for (std::size_t k = 0; k < ringVertices.size(); ++k)
   {
-    this->RingRoiRows.push_back(roiRow[ringVertices[k]]);
-    this->RingRest.row(k) = positions[ringVertices[k]].transpose();
+    rings.RoiRows.push_back(roiRow[ringVertices[k]]);
+    rings.Rest.row(k) = positions[ringVertices[k]].transpose();
   }
-  this->Fits.resize(n);
-  this->FitOffsets.resize(n);
+  rings.Fits.resize(n);
+  rings.FitOffsets.resize(n);
   loop(0, n, [&](int first, int last) {
     for (int row = first; row < last; ++row)
     {
-      this->FitRing(row, formulation.AllowScaling);
+      rings.Fit(row, formulation.AllowScaling);
     }
   });
 
@@ -205,11 +247,11 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   for (int row = 0; row < n; ++row)
   {
     std::vector<int>& columns = residualColumns[row];
-    for (int k = this->RingOffsets[row]; k < this->RingOffsets[row + 1]; ++k)
+    for (int k = rings.Offsets[row]; k < rings.Offsets[row + 1]; ++k)
     {
-      if (this->RingRoiRows[k] >= 0)
+      if (rings.RoiRows[k] >= 0)
       {
-        columns.push_back(this->RingRoiRows[k]);
+        columns.push_back(rings.RoiRows[k]);
       }
     }
     if (!formulation.PerEdge)
@@ -225,19 +267,19 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
 
   const Positions& fixedPart = plain.GetFixedPart();
   auto fillRows = [&](int row, VertexRows& rows) {
-    const int begin = this->RingOffsets[row];
-    const int size = this->RingOffsets[row + 1] - begin;
+    const int begin = rings.Offsets[row];
+    const int size = rings.Offsets[row + 1] - begin;
     auto addTransformTerm = [&](int equation, const Eigen::Vector3d& e, double scale) {
       const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
-      const Eigen::MatrixXd transform = apply * this->Fits[row];
-      rows.Known.segment<3>(equation) += scale * apply * this->FitOffsets[row];
+      const Eigen::MatrixXd transform = apply * rings.Fits[row];
+      rows.Known.segment<3>(equation) += scale * apply * rings.FitOffsets[row];
       for (int q = 0; q < size; ++q)
       {
-        const int member = this->RingRoiRows[begin + q];
+        const int member = rings.RoiRows[begin + q];
         const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
         if (member < 0)
         {
-          rows.Known.segment<3>(equation) += block * this->RingRest.row(begin + q).transpose();
+          rows.Known.segment<3>(equation) += block * rings.Rest.row(begin + q).transpose();
           continue;
         }
         rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)) -= block;
@@ -253,7 +295,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
           it.value();
       }
       rows.Known.head<3>() -= fixedPart.row(row).transpose();
-      addTransformTerm(0, this->RestDelta.row(row).transpose(), 1.0);
+      addTransformTerm(0, restDelta.row(row).transpose(), 1.0);
       return;
     }
     // sqrt(w_ij) ((v'_i - v'_j) - T_i(V') (v_i - v_j)) = 0, with the row's weights.
@@ -268,7 +310,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     {
       const double scale = std::sqrt(weights[q - 1] / total);
       const int equation = 3 * (q - 1);
-      const int member = this->RingRoiRows[begin + q];
+      const int member = rings.RoiRows[begin + q];
       rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(row)).diagonal().array() += scale;
       if (member >= 0)
       {
@@ -276,10 +318,10 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
       }
       else
       {
-        rows.Known.segment<3>(equation) += scale * this->RingRest.row(begin + q).transpose();
+        rows.Known.segment<3>(equation) += scale * rings.Rest.row(begin + q).transpose();
       }
       addTransformTerm(
-        equation, (this->RingRest.row(begin) - this->RingRest.row(begin + q)).transpose(), scale);
+        equation, (rings.Rest.row(begin) - rings.Rest.row(begin + q)).transpose(), scale);
     }
   };
 
@@ -307,12 +349,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   }
   const Eigen::SparseMatrix<double> normalMatrix = normal.UpperTriangle(plain.GetSquaredWeights());
   this->KnownRightHandSide = normal.GetRightHandSide();
-  this->RingOffsets = {};
-  this->RingRoiRows = {};
-  this->RingRest = {};
-  this->Fits = {};
-  this->FitOffsets = {};
-  this->RestDelta = {};
+  rings = RingFits(); // not needed by the factorization: its peak is lower without them
   const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
     options.MaximumFactorBytes, /*blockSize=*/3);
   if (!error.empty())
@@ -348,31 +385,6 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     this->GroupResponses[g] = solution.middleCols<12>(1 + 12 * g);
   }
   return {};
-}
-
-void ImplicitSimilaritySystem::FitRing(int row, bool allowScaling)
-{
-  const int begin = this->RingOffsets[row];
-  const int size = this->RingOffsets[row + 1] - begin;
-  // Centre on the vertex for conditioning; the translation absorbs the shift.
-  Eigen::MatrixXd fitMatrix(3 * size, 7);
-  for (int q = 0; q < size; ++q)
-  {
-    fitMatrix.middleRows<3>(3 * q) =
-      FitBlock(this->RingRest.row(begin + q) - this->RingRest.row(begin));
-  }
-  this->Fits[row].setZero(4, 3 * size);
-  this->FitOffsets[row].setZero();
-  if (allowScaling)
-  {
-    this->Fits[row] = fitMatrix.completeOrthogonalDecomposition().pseudoInverse().topRows(4);
-    return;
-  }
-  // s = 1: fit (h, t) to what the rest ring, unscaled, leaves over.
-  const Eigen::MatrixXd fit =
-    fitMatrix.rightCols<6>().completeOrthogonalDecomposition().pseudoInverse().topRows(3);
-  this->Fits[row].bottomRows<3>() = fit;
-  this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
 }
 
 Positions ImplicitSimilaritySystem::Solve(

@@ -54,21 +54,7 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
-  // Fits the transform of ROI vertex `row` to its rest one-ring (Fits and FitOffsets).
-  void FitRing(int row, bool allowScaling);
-
   int NumberOfVertices = 0;
-  // Used while building only. Per ROI vertex: offsets into the ring arrays and into the fit
-  // coefficients.
-  std::vector<int> RingOffsets;
-  std::vector<int> RingRoiRows;   // ROI row of each ring member, -1 if fixed
-  Positions RingRest;             // rest position of each ring member
-  // The (s, h1, h2, h3) rows of the least-squares fit, (A_i^T A_i)^-1 A_i^T, per vertex.
-  std::vector<Eigen::MatrixXd> Fits;
-  // The constant part of each fit: (1, -fit of the rest ring) with s fixed, zero otherwise.
-  std::vector<Eigen::Vector4d, Eigen::aligned_allocator<Eigen::Vector4d>> FitOffsets;
-  Positions RestDelta;
-  // The factor, the right-hand side and the responses are all a solve needs.
   SparseCholesky Factor;
   // A^T b of the known parts (fixed vertices): constant per region.
   Eigen::VectorXd KnownRightHandSide;
