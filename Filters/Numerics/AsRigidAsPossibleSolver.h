@@ -4,8 +4,9 @@
 //
 // Energy: sum_i sum_j w_ij |(v'_i - v'_j) - R_i (v_i - v_j)|^2 over the ROI and the ring of fixed
 // vertices around it, with symmetric uniform or clamped cotangent weights.
-//  - Local step: each R_i is the rotation closest to the ring's covariance (a 3 x 3 SVD), in
-//    parallel through the injected ParallelFor.
+//  - Local step: each R_i is the rotation closest to the ring's covariance, in parallel through
+//    the injected ParallelFor: an exact polar decomposition seeds it, Newton steps from the last
+//    iteration's refine it.
 //  - Global step: the square system L_ff x_f = b over the free vertices (the ROI without its
 //    handles), with the handles at their targets and the vertices outside the ROI at rest as hard
 //    values. L_ff is the weighted graph Laplacian, about 7 nonzeros a row against the normal
