@@ -256,12 +256,13 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   Positions& roiPositions = iterate.Points;
   Quaternions& quaternions = iterate.Rotations;
   ArapIterate::Workspace& work = iterate.Work;
-  // A solve that continues the last one (its rotations still fit the points) may extrapolate;
-  // otherwise only the handle rows move between solves, and the first local step redoes only
-  // the rotations around the handles (the others would come out the same).
+  // A solve that continues the last one (its rotations still fit the points) with moved
+  // handles may extrapolate; otherwise only the handle rows move between solves, and the first
+  // local step redoes only the rotations around the handles (the others would come out the same).
   const bool continues = work.RotationsFitPoints;
   const bool extrapolate = continues && options.Extrapolate && options.MaximumIterations > 0 &&
-    iterate.Before.rows() == roiPositions.rows();
+    iterate.Before.rows() == roiPositions.rows() && handleMaps != iterate.BeforeMaps;
+  iterate.BeforeMaps = handleMaps;
   const bool aroundHandles = continues && !extrapolate;
   work.RotationsFitPoints = false;
   if (extrapolate)
