@@ -202,11 +202,13 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
         deformation.noalias() +=
           this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
       }
-      if (seed)
+      // Exact rotations, so that the iterate is a function of the points alone (to 1e-13).
+      if (seed || !RefineClosestRotation(deformation, quaternions[i]))
       {
         quaternions[i] = ClosestRotation(deformation);
+        RefineClosestRotation(deformation, quaternions[i]);
       }
-      rotations[i] = RefineClosestRotation(deformation, quaternions[i]);
+      rotations[i] = quaternions[i].toRotationMatrix();
       residuals[i] = 0.0;
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
@@ -401,7 +403,6 @@ ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& 
 void AsRigidAsPossibleSolver::Straighten(
   const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const
 {
-  iterate.Rotations.clear(); // exact rotations: the result depends on the points alone
   this->LocalStepOnly(handleMaps, iterate, loop);
   this->GlobalStep(iterate.Work.Rotations, iterate, loop);
 }

@@ -107,11 +107,10 @@ public:
   /// reconstruction from the rest edges, as the none mode with hard constraints).
   ArapIterate InitialGuess(const std::vector<AffineMap>& handleMaps) const;
 
-  /// One local step at `iterate.Points`, its rotations from exact polar decompositions, then
-  /// one global step: the rigid correction of another mode's result, a function of the points
-  /// and the handle maps alone (rotations refined from the last call's would save two thirds of
-  /// the time at 30k vertices, but would make the result depend on the drag's history). The
-  /// handle rows are set first; `iterate` keeps the buffers between calls.
+  /// One local step at `iterate.Points`, then one global step: the rigid correction of another
+  /// mode's result, a function of the points and the handle maps alone (the rotations are
+  /// refined from the last call's, but to convergence, or decomposed afresh). The handle rows
+  /// are set first; `iterate` keeps the buffers and rotations between calls.
   void Straighten(
     const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const;
 

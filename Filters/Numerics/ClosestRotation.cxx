@@ -6,7 +6,7 @@
 
 namespace LaplacianEditing
 {
-Eigen::Matrix3d RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int steps)
+bool RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int steps)
 {
   for (int step = 0; step < steps; ++step)
   {
@@ -44,10 +44,10 @@ Eigen::Matrix3d RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaternio
     q.normalize();
     if (concave && omega.squaredNorm() < 1e-14)
     {
-      break; // quadratic convergence: the next step would be of order 1e-14 or less
+      return true; // quadratic convergence: the next step would be of order 1e-14 or less
     }
   }
-  return q.toRotationMatrix();
+  return false;
 }
 
 Eigen::Quaterniond ClosestRotation(const Eigen::Matrix3d& a)

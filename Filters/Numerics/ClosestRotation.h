@@ -10,15 +10,16 @@
 
 namespace LaplacianEditing
 {
-/// Refines `q` in place towards the rotation closest to `a` by at most `steps` steps, and returns
-/// it as a matrix. Newton's steps on the rotation angle, quadratically convergent: a rotation
-/// warm-started from the last iteration's reaches the exact one in two or three. Where the
-/// Hessian is not safely positive definite (far from the maximum), the step is Mueller, Bender,
-/// Chentanez and Macklin's ("A Robust Method to Extract the Rotational Part of Deformations",
-/// MIG 2016), which lowers |a - R| from anywhere.
-Eigen::Matrix3d RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int steps = 4);
+/// Refines `q` in place towards the rotation closest to `a` by at most `steps` steps; returns
+/// whether it converged (to about 1e-14 of an angle). Newton's steps on the rotation angle,
+/// quadratically convergent: a rotation warm-started from the last iteration's converges in two
+/// or three. Where the Hessian is not safely positive definite (far from the maximum), the step
+/// is Mueller, Bender, Chentanez and Macklin's ("A Robust Method to Extract the Rotational Part
+/// of Deformations", MIG 2016), which lowers |a - R| from anywhere.
+bool RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int steps = 4);
 
-/// The closest rotation, exactly: the seed of a rotation with no history.
+/// The closest rotation, exactly: the seed of a rotation with no history, and the fallback of
+/// a refinement that does not converge.
 Eigen::Quaterniond ClosestRotation(const Eigen::Matrix3d& a);
 }
 
