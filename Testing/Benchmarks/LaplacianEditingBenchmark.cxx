@@ -259,12 +259,14 @@ struct Measurement
   double Analysis = 0.0;
   double Factorization = 0.0;
   double Move = 0.0;
+  double SlowestMove = 0.0;
   double Update = 0.0;
   bool Refactored = false;
   vtkSmartPointer<vtkPolyData> Output;
-  // As-rigid-as-possible mode: iterations per move, and the last move's energy over the energy
-  // converged at the same pose.
+  // As-rigid-as-possible mode: iterations per move (their median, and each move's), and the
+  // last move's energy over the energy converged at the same pose.
   double ARAPIterations = 0.0;
+  std::vector<double> ARAPIterationsPerMove;
   double ARAPEnergyRatio = 0.0;
 
   std::string Json() const
@@ -275,10 +277,16 @@ struct Measurement
          << ", \"analysis_seconds\": " << this->Analysis
          << ", \"factorization_seconds\": " << this->Factorization
          << ", \"move_median_seconds\": " << this->Move
+         << ", \"move_slowest_seconds\": " << this->SlowestMove
          << ", \"update_median_seconds\": " << this->Update;
     if (this->ARAPEnergyRatio > 0.0)
     {
-      json << ", \"arap_median_iterations\": " << this->ARAPIterations
+      json << ", \"arap_median_iterations\": " << this->ARAPIterations << ", \"arap_iterations\": [";
+      for (std::size_t k = 0; k < this->ARAPIterationsPerMove.size(); ++k)
+      {
+        json << (k ? ", " : "") << this->ARAPIterationsPerMove[k];
+      }
+      json << "]"
            << ", \"arap_energy_over_converged\": " << this->ARAPEnergyRatio;
     }
     return json.str();
@@ -334,6 +342,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     arapIterations.push_back(filter->GetNumberOfARAPIterations());
   }
   result.Move = Median(moves);
+  result.SlowestMove = *std::max_element(moves.begin(), moves.end());
   result.Update = Median(updates);
   result.Refactored = filter->GetNumberOfFactorizations() != factorizations;
   if (mode == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE)
@@ -344,6 +353,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     filter->SetConvergence(1e-8);
     filter->Update();
     result.ARAPIterations = Median(arapIterations);
+    result.ARAPIterationsPerMove = arapIterations;
     result.ARAPEnergyRatio = filter->GetARAPEnergy() > 0.0 ? dragged / filter->GetARAPEnergy() : 1.0;
   }
   result.Output = filter->GetOutput();
