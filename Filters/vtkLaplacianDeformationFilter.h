@@ -286,7 +286,7 @@ public:
    * As-rigid-as-possible mode: an update that continues the last one with moved handles starts
    * from the last result moved on by the last update's change, a constant-velocity guess during
    * a drag (and a momentum step, stable for the local-global iteration). At 30k vertices a
-   * smooth drag then ends within 2% of the converged energy in 2 iterations a step instead of
+   * smooth drag then ends within 4% of the converged energy in 2 iterations a step instead of
    * 11. With the handles held still, updates iterate plainly, so the shape settles. Default on;
    * off, each update starts from the last result.
    */
