@@ -265,29 +265,18 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   const bool extrapolate = continues && options.Extrapolate && options.MaximumIterations > 0 &&
     iterate.Before.rows() == roiPositions.rows() && handleMaps != iterate.BeforeMaps;
   iterate.BeforeMaps = handleMaps;
-  const bool aroundHandles = continues && !extrapolate;
-  work.RotationsFitPoints = false;
   if (extrapolate)
   {
     work.Candidate = roiPositions;
     roiPositions += roiPositions - iterate.Before;
     iterate.Before.swap(work.Candidate);
   }
-  else if (options.MaximumIterations > 0)
+  else
   {
-    iterate.Before = roiPositions; // a local step alone (Straighten) leaves nothing to continue
-  }
-  for (int k = 0; k < this->NumberOfROIVertices; ++k)
-  {
-    const int group = this->HandleGroups[k];
-    if (group >= 0)
-    {
-      const Vector3 rest = this->RestPatch.row(k).transpose();
-      roiPositions.row(k) = (group < static_cast<int>(handleMaps.size())
-          ? Apply(handleMaps[group], rest) : rest).transpose();
-    }
+    iterate.Before = roiPositions;
   }
   ArapResult result;
+  result.Energy = this->LocalStep(handleMaps, iterate, loop, continues && !extrapolate);
   const int free = static_cast<int>(this->FreeRows.size());
   auto freeOf = [&](const Positions& roi) {
     Eigen::MatrixXd x(free, 3);
@@ -305,10 +294,6 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   };
   std::vector<Eigen::Matrix3d>& rotations = work.Rotations;
   std::vector<Vector3>& patch = work.Patch;
-  this->Patch(roiPositions, patch);
-  result.Energy = this->Rotate(
-    patch, rotations, quaternions, work, loop, aroundHandles ? &this->AroundHandles : nullptr);
-  work.RotationsFitPoints = true;
   if (free == 0 || options.MaximumIterations <= 0)
   {
     return result;
@@ -397,7 +382,7 @@ ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& 
 {
   ArapIterate guess;
   guess.Points = this->RestPatch.topRows(this->NumberOfROIVertices);
-  this->LocalStepOnly(handleMaps, guess, SerialFor);
+  this->LocalStep(handleMaps, guess, SerialFor, false);
   const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
   this->GlobalStep(identities, guess, SerialFor);
   guess.Rotations.clear(); // those of the rest positions, not of the guess
@@ -407,17 +392,29 @@ ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& 
 void AsRigidAsPossibleSolver::Straighten(
   const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const
 {
-  this->LocalStepOnly(handleMaps, iterate, loop);
+  this->LocalStep(handleMaps, iterate, loop, false);
   this->GlobalStep(iterate.Work.Rotations, iterate, loop);
 }
 
-void AsRigidAsPossibleSolver::LocalStepOnly(
-  const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const
+double AsRigidAsPossibleSolver::LocalStep(const std::vector<AffineMap>& handleMaps,
+  ArapIterate& iterate, const ParallelFor& loop, bool aroundHandles) const
 {
-  iterate.Work.RotationsFitPoints = false;
-  ArapOptions none;
-  none.MaximumIterations = 0;
-  this->Solve(handleMaps, iterate, none, loop);
+  for (int k = 0; k < this->NumberOfROIVertices; ++k)
+  {
+    const int group = this->HandleGroups[k];
+    if (group >= 0)
+    {
+      const Vector3 rest = this->RestPatch.row(k).transpose();
+      iterate.Points.row(k) = (group < static_cast<int>(handleMaps.size())
+          ? Apply(handleMaps[group], rest) : rest).transpose();
+    }
+  }
+  ArapIterate::Workspace& work = iterate.Work;
+  this->Patch(iterate.Points, work.Patch);
+  const double energy = this->Rotate(work.Patch, work.Rotations, iterate.Rotations, work, loop,
+    aroundHandles ? &this->AroundHandles : nullptr);
+  work.RotationsFitPoints = true;
+  return energy;
 }
 
 void AsRigidAsPossibleSolver::GlobalStep(const std::vector<Eigen::Matrix3d>& rotations,

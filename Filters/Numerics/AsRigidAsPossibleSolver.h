@@ -127,9 +127,11 @@ private:
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
     Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop,
     const std::vector<int>* only = nullptr) const;
-  // A solve's first local step alone.
-  void LocalStepOnly(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
-    const ParallelFor& loop) const;
+  // Sets the handle rows to their targets, then the local step at the iterate's points (only
+  // around the handles if `aroundHandles`, the other rotations fitting already). Returns the
+  // energy.
+  double LocalStep(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
+    const ParallelFor& loop, bool aroundHandles) const;
   // A global step with `rotations` from the iterate's patch, written to its free rows.
   void GlobalStep(const std::vector<Eigen::Matrix3d>& rotations, ArapIterate& iterate,
     const ParallelFor& loop) const;
