@@ -502,6 +502,49 @@ Eigen::Matrix3d ReferenceClosestRotation(const Eigen::Matrix3d& a)
 }
 }
 
+namespace
+{
+// Covariances of every kind of one-ring, by trial number: general, mirrored, planar (rank 2, as
+// a flat ring's), isotropic planar and nearly rigid, between random rotations, at scale 1e-4.
+class RingCovariances
+{
+public:
+  explicit RingCovariances(unsigned seed)
+    : Random(seed)
+  {
+  }
+
+  double Uniform() { return this->Distribution(this->Random); }
+
+  Eigen::Matrix3d RandomRotation()
+  {
+    return Eigen::Quaterniond(this->Uniform(), this->Uniform(), this->Uniform(), this->Uniform())
+      .normalized()
+      .toRotationMatrix();
+  }
+
+  Eigen::Matrix3d Next(int trial)
+  {
+    Eigen::Vector3d singular(
+      1.0 + this->Uniform(), 0.5 + 0.4 * this->Uniform(), 0.2 + 0.1 * this->Uniform());
+    switch (trial % 5)
+    {
+      case 1: singular.z() = -singular.z(); break; // a reflection
+      case 2: singular.z() = 0.0; break;            // planar
+      case 3: singular << 1.0, 1.0, 0.0; break;    // isotropic planar
+      case 4: singular << 1.0, 1.0 + 1e-3 * this->Uniform(), 1.0; break; // nearly rigid
+      default: break;
+    }
+    const Eigen::Matrix3d right = this->RandomRotation();
+    return 1e-4 * this->RandomRotation() * singular.asDiagonal() * right.transpose();
+  }
+
+private:
+  std::mt19937 Random;
+  std::uniform_real_distribution<double> Distribution{ -1.0, 1.0 };
+};
+}
+
 TEST(ClosestRotation, MatchesTheSVDOnEveryKindOfRing)
 {
   // The closed-form seed of the local step, on general, mirrored, planar (rank 2, as a flat
@@ -510,13 +553,7 @@ TEST(ClosestRotation, MatchesTheSVDOnEveryKindOfRing)
   // it, to 1e-12 of |A|), and the SVD's rotation itself to 1e-6 (measured 9.9e-7 on a mirrored
   // matrix whose two smallest singular values nearly cancel, where the rotation is
   // ill-conditioned and the SVD's own is no better; 1.2e-8 otherwise).
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  auto randomRotation = [&] {
-    return Eigen::Quaterniond(uniform(random), uniform(random), uniform(random), uniform(random))
-      .normalized()
-      .toRotationMatrix();
-  };
+  RingCovariances covariances(7);
   double worst = 0.0;
   auto check = [&](const Eigen::Matrix3d& a, bool unique) {
     const Eigen::Matrix3d rotation = ClosestRotation(a).toRotationMatrix();
@@ -532,18 +569,7 @@ TEST(ClosestRotation, MatchesTheSVDOnEveryKindOfRing)
   };
   for (int trial = 0; trial < 2000; ++trial)
   {
-    Eigen::Vector3d singular(1.0 + uniform(random), 0.5 + 0.4 * uniform(random),
-      0.2 + 0.1 * uniform(random));
-    switch (trial % 5)
-    {
-      case 1: singular.z() = -singular.z(); break; // a reflection
-      case 2: singular.z() = 0.0; break;            // planar
-      case 3: singular << 1.0, 1.0, 0.0; break;    // isotropic planar
-      case 4: singular << 1.0, 1.0 + 1e-3 * uniform(random), 1.0; break; // nearly rigid
-      default: break;
-    }
-    const Eigen::Matrix3d v = randomRotation();
-    check(1e-4 * randomRotation() * singular.asDiagonal() * v.transpose(), true);
+    check(covariances.Next(trial), true);
   }
   std::printf("closest rotation: largest difference from the SVD's %.1e\n", worst);
   EXPECT_LT(worst, 1e-6);
@@ -553,33 +579,19 @@ TEST(ClosestRotation, MatchesTheSVDOnEveryKindOfRing)
 TEST(ClosestRotation, RefinementFromAWarmStartReachesTheSVDs)
 {
   // The local step of a continued solve refines the last rotation. From 0.05 of a radian off
-  // (more than a drag step turns a ring), on general, mirrored, planar, isotropic planar and
-  // nearly rigid matrices: required, convergence within the default steps, to the SVD's rotation to 1e-10
-  // (measured: 3e-13; the Mueller steps alone: 6.5e-2). Mueller's steps alone, which take trace(R^T A) for the whole Hessian,
-  // halve the error a step on planar matrices: they left 1e-5 on a drag's rings.
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  auto randomRotation = [&](double angle) {
-    const Eigen::Vector3d axis = Eigen::Vector3d(uniform(random), uniform(random), uniform(random)).normalized();
-    return Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
-  };
+  // (more than a drag step turns a ring), on every kind of ring: required, convergence within
+  // the default steps, to the SVD's rotation to 1e-10 (measured: 5e-13). Mueller's steps alone,
+  // which take trace(R^T A) for the whole Hessian, halve the error a step on planar matrices
+  // (6.5e-2 on this test's first version; 1e-5 left on a drag's rings).
+  RingCovariances covariances(11);
   double worst = 0.0;
   for (int trial = 0; trial < 2000; ++trial)
   {
-    Eigen::Vector3d singular(1.0 + uniform(random), 0.5 + 0.4 * uniform(random),
-      0.2 + 0.1 * uniform(random));
-    switch (trial % 5)
-    {
-      case 1: singular.z() = -singular.z(); break;
-      case 2: singular.z() = 0.0; break;
-      case 3: singular << 1.0, 1.0, 0.0; break;
-      case 4: singular << 1.0, 1.0 + 1e-3 * uniform(random), 1.0; break;
-      default: break;
-    }
-    const Eigen::Matrix3d a = 1e-4 * randomRotation(3.0 * uniform(random)).toRotationMatrix() *
-      singular.asDiagonal() * randomRotation(3.0 * uniform(random)).toRotationMatrix().transpose();
+    const Eigen::Matrix3d a = covariances.Next(trial);
     const Eigen::Matrix3d reference = ReferenceClosestRotation(a);
-    Eigen::Quaterniond q = randomRotation(0.05) * Eigen::Quaterniond(reference);
+    const Eigen::Vector3d axis =
+      Eigen::Vector3d(covariances.Uniform(), covariances.Uniform(), covariances.Uniform()).normalized();
+    Eigen::Quaterniond q = Eigen::Quaterniond(Eigen::AngleAxisd(0.05, axis)) * Eigen::Quaterniond(reference);
     EXPECT_TRUE(RefineClosestRotation(a, q)) << "trial " << trial;
     worst = std::max(worst, (q.toRotationMatrix() - reference).norm());
   }
