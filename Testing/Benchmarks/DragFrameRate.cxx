@@ -8,7 +8,11 @@
 // none, default). Without "widget" each frame sets the handle transform directly, lifting the
 // handle by 10% of the diagonal over the drag (this path uses only the filter's basic API, so
 // the same program measures older versions too). With "widget" a vtkDeformationHandleWidget is
-// dragged by recorded mouse events, 2 pixels up per frame, as a user would.
+// dragged by recorded mouse events, 2 pixels up per frame, as a user would, and released.
+//
+// It also prints the slowest frame, each update's as-rigid-as-possible iterations (mode 3),
+// and that mode's energy at the last frame of the drag and after the release, over the energy
+// converged at the same pose.
 #include "MeshReader.h"
 
 #include "vtkLaplacianDeformationFilter.h"
@@ -17,6 +21,8 @@
 #include "vtkDeformationHandleWidget.h"
 
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkMath.h"
 #include "vtkRenderWindowInteractor.h"
@@ -29,6 +35,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 int main(int argc, char* argv[])
 {
@@ -102,7 +109,43 @@ int main(int argc, char* argv[])
     recorder->SetInputString(events.c_str());
   }
 
+  // Each update's time and iterations, and the energy of the updates during the drag and last.
+  struct Trace
+  {
+    vtkLaplacianDeformationFilter* Filter;
+    std::chrono::steady_clock::time_point Last;
+    double Slowest = 0.0;
+    std::vector<int> Iterations;
+    std::vector<double> Energies;
+    std::size_t DragUpdates = 0; // the updates before the release
+  } trace{ filter, std::chrono::steady_clock::now() };
+  vtkNew<vtkCallbackCommand> renderEnd;
+  renderEnd->SetClientData(&trace);
+  renderEnd->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    auto& t = *static_cast<Trace*>(data);
+    const auto now = std::chrono::steady_clock::now();
+    t.Slowest = std::max(t.Slowest, std::chrono::duration<double>(now - t.Last).count());
+    t.Last = now;
+  });
+  vtkNew<vtkCallbackCommand> filterEnd;
+  filterEnd->SetClientData(&trace);
+  filterEnd->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    auto& t = *static_cast<Trace*>(data);
+    t.Iterations.push_back(t.Filter->GetNumberOfARAPIterations());
+    t.Energies.push_back(t.Filter->GetARAPEnergy());
+  });
+  vtkNew<vtkCallbackCommand> release;
+  release->SetClientData(&trace);
+  release->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+    auto& t = *static_cast<Trace*>(data);
+    t.DragUpdates = t.Energies.size();
+  });
+  widget->AddObserver(vtkCommand::EndInteractionEvent, release);
+  window->AddObserver(vtkCommand::EndEvent, renderEnd);
+  filter->AddObserver(vtkCommand::EndEvent, filterEnd);
+
   const auto start = std::chrono::steady_clock::now();
+  trace.Last = start;
   if (useWidget)
   {
     recorder->Play(); // each move renders through the widget
@@ -118,6 +161,8 @@ int main(int argc, char* argv[])
   }
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  window->RemoveObserver(renderEnd);
+  filter->RemoveObserver(filterEnd);
   // How far the drag took the handle, to show the frames really moved it.
   double origin[3] = { 0.0, 0.0, 0.0 }, moved[3];
   filter->GetHandleTransform()->TransformPoint(origin, moved);
@@ -126,6 +171,26 @@ int main(int argc, char* argv[])
             << ", \"driver\": \"" << (useWidget ? "widget" : "transform") << "\", \"frames\": "
             << frames << ", \"frames_per_second\": " << frames / seconds
             << ", \"handle_moved\": " << vtkMath::Norm(moved)
-            << ", \"factorizations\": " << filter->GetNumberOfFactorizations() << "}\n";
+            << ", \"factorizations\": " << filter->GetNumberOfFactorizations()
+            << ", \"slowest_frame_seconds\": " << trace.Slowest;
+  if (filter->GetRotationMode() == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE &&
+    !trace.Energies.empty())
+  {
+    std::cout << ", \"arap_iterations\": [";
+    for (std::size_t k = 0; k < trace.Iterations.size(); ++k)
+    {
+      std::cout << (k ? ", " : "") << trace.Iterations[k];
+    }
+    const std::size_t dragUpdates = useWidget ? trace.DragUpdates : trace.Energies.size();
+    const double dragged = trace.Energies[std::max<std::size_t>(dragUpdates, 1) - 1];
+    const double released = trace.Energies.back();
+    filter->SetARAPIterations(10000);
+    filter->SetConvergence(1e-9);
+    filter->Update();
+    const double converged = filter->GetARAPEnergy();
+    std::cout << "], \"arap_energy_over_converged\": {\"drag_end\": " << dragged / converged
+              << ", \"after_release\": " << released / converged << "}";
+  }
+  std::cout << "}\n";
   return EXIT_SUCCESS;
 }
