@@ -748,6 +748,19 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   return true;
 }
 
+void vtkLaplacianDeformationFilter::SetDragging(vtkTypeBool dragging)
+{
+  if (this->Dragging == dragging)
+  {
+    return;
+  }
+  this->Dragging = dragging;
+  if (!dragging)
+  {
+    this->Modified(); // the pose the drag left converges on the next update
+  }
+}
+
 bool vtkLaplacianDeformationFilter::UpdateRotationModel()
 {
   vtkInternals& internals = *this->Internals;
@@ -761,7 +774,8 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   const bool paper = this->ImplicitFormulation == IMPLICIT_PAPER;
   rotation.Formulation.PerEdge = !paper;
   rotation.Formulation.AllowScaling = paper;
-  rotation.Arap.MaximumIterations = this->ARAPIterations;
+  rotation.Arap.MaximumIterations =
+    this->Dragging ? std::min(this->DragARAPIterations, this->ARAPIterations) : this->ARAPIterations;
   rotation.Arap.Tolerance = this->Convergence;
   rotation.Arap.Accelerate = this->Acceleration != 0;
   rotation.Arap.Extrapolate = this->Extrapolation != 0;
@@ -1019,6 +1033,8 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImplicitFormulation: "
      << name(this->ImplicitFormulation, { "PerEdge", "Paper" }) << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
+  os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
+  os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
   os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";

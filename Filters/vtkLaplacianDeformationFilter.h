@@ -267,6 +267,27 @@ public:
   vtkGetMacro(ARAPIterations, int);
 
   /**
+   * As-rigid-as-possible mode: a handle is being dragged (set by vtkDeformationHandleWidget
+   * during a drag, and by its ParaView panel). Meanwhile each update runs at most
+   * DragARAPIterations, so every frame costs about the same: at 30k vertices, 2 iterations
+   * (14 ms) instead of 20 (150 ms) on the drag's first frames, when the extrapolated guess has
+   * no velocity yet. The drag's later frames need no more (they start from the extrapolated
+   * guess). Turning it on changes only the updates that follow, so it does not mark the filter
+   * modified; turning it off does, so that the update after the drag iterates on with
+   * ARAPIterations. Default off.
+   */
+  void SetDragging(vtkTypeBool dragging);
+  vtkGetMacro(Dragging, vtkTypeBool);
+  vtkBooleanMacro(Dragging, vtkTypeBool);
+
+  /**
+   * As-rigid-as-possible mode: the most iterations per update while Dragging (1 to 10000;
+   * never more than ARAPIterations). Default 2.
+   */
+  vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
+  vtkGetMacro(DragARAPIterations, int);
+
+  /**
    * As-rigid-as-possible mode: an update stops early when an iteration lowers the energy by
    * less than this fraction of it (0 to 1). Default 1e-3.
    */
@@ -637,6 +658,8 @@ protected:
   vtkTypeBool PreserveDetailScale = 1;
   int ImplicitFormulation = IMPLICIT_PER_EDGE;
   int ARAPIterations = 20;
+  vtkTypeBool Dragging = false;
+  int DragARAPIterations = 2;
   double Convergence = 1e-3;
   vtkTypeBool Acceleration = 1;
   vtkTypeBool Extrapolation = 1;

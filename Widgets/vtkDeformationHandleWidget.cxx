@@ -230,6 +230,10 @@ void vtkDeformationHandleWidget::SetDeformationFilter(vtkLaplacianDeformationFil
   {
     this->DeformationFilter->RemoveObserver(tags[0]);
     this->DeformationFilter->RemoveObserver(tags[1]);
+    if (this->Interacting)
+    {
+      this->DeformationFilter->DraggingOff(); // unpaired mid-drag: the drag ends for it
+    }
     this->DeformationFilter->UnRegister(this);
   }
   this->DeformationFilter = filter;
@@ -369,6 +373,10 @@ void vtkDeformationHandleWidget::BeginInteraction(bool resize, bool constrain)
   double position[2] = { static_cast<double>(x), static_cast<double>(y) };
   rep->StartWidgetInteraction(position);
   this->Interacting = true;
+  if (this->DeformationFilter && !resize)
+  {
+    this->DeformationFilter->DraggingOn(); // every frame of the drag costs about the same
+  }
   this->GrabFocus(this->EventCallbackCommand);
   this->EventCallbackCommand->SetAbortFlag(1);
   this->StartInteraction();
@@ -491,6 +499,10 @@ void vtkDeformationHandleWidget::EndSelectAction(vtkAbstractWidget* widget)
     self->PushToFilter(); // one refactorization per resize, on release
   }
   self->Interacting = false;
+  if (self->DeformationFilter)
+  {
+    self->DeformationFilter->DraggingOff(); // the render below converges the released pose
+  }
   self->ReleaseFocus();
   self->EventCallbackCommand->SetAbortFlag(1);
   self->EndInteraction();

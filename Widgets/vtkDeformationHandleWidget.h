@@ -6,7 +6,9 @@
  * vtkLaplacianDeformationFilter (SetDeformationFilter): the filter's handle transform becomes
  * the representation's, so the surface rendered from the filter's output follows the handle
  * during a drag. Only moving the handle re-solves; the radii reach the filter when a resize
- * ends, so the region is refactored once per resize.
+ * ends, so the region is refactored once per resize. A drag turns the filter's Dragging on
+ * and, on release, off: in the as-rigid-as-possible mode the frames of a drag then run a few
+ * iterations each, and the release converges.
  *
  * Default bindings (left button), set in the event translator so that applications can rebind
  * them (GetEventTranslator()->SetTranslation(...)):

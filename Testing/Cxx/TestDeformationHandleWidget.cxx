@@ -7,7 +7,8 @@
 // renders a translucent handle against a baseline; a seventh turns the handle about each axis of
 // its frame; an eighth moves it along one axis and resizes the region with the wheel; a ninth
 // checks the accessors ParaView drives against the filter's handle properties; a tenth drags
-// two handle groups with a widget each, commits and undoes.
+// two handle groups with a widget each, commits and undoes; an eleventh drags in the
+// as-rigid-as-possible mode, a few iterations a frame, and converges on the release.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 #include "FilterTestHelpers.h"
@@ -40,6 +41,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -794,6 +796,88 @@ int TwoHandleGroups()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int ARAPDragCapsIterations()
+{
+  // In the as-rigid-as-possible mode a drag turns the filter's Dragging on: each frame runs at
+  // most DragARAPIterations, the drag never refactors, and the release turns it off, so that
+  // one more update iterates on with ARAPIterations.
+  Scene scene;
+  scene.Filter->SetRotationModeToAsRigidAsPossible();
+  scene.Filter->Update();
+  const vtkMTimeType before = scene.Filter->GetMTime();
+  scene.Filter->DraggingOn();
+  Check(scene.Filter->GetMTime() == before, "turning Dragging on does not modify the filter");
+  scene.Filter->DraggingOff();
+  Check(scene.Filter->GetMTime() > before, "turning it off does");
+  scene.Filter->Update();
+  auto widget = scene.MakeWidget();
+  const int factorizations = scene.Filter->GetNumberOfFactorizations();
+
+  struct Update
+  {
+    bool Dragging;
+    int Iterations;
+    double Energy;
+  };
+  std::vector<Update> updates;
+  vtkNew<vtkCallbackCommand> watch;
+  watch->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    auto* filter = static_cast<vtkLaplacianDeformationFilter*>(caller);
+    static_cast<std::vector<Update>*>(data)->push_back(
+      { filter->GetDragging() != 0, filter->GetNumberOfARAPIterations(), filter->GetARAPEnergy() });
+  });
+  watch->SetClientData(&updates);
+  scene.Filter->AddObserver(vtkCommand::EndEvent, watch);
+
+  double center[3], at[2];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  scene.Display(center, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 120.0 * t; }));
+  scene.Window->Render();
+  scene.Filter->RemoveObserver(watch);
+
+  Check(updates.size() == 11, "one update a move and one after the release (" +
+      std::to_string(updates.size()) + ")");
+  Check(scene.Filter->GetNumberOfFactorizations() == factorizations, "the drag does not refactor");
+  if (updates.size() < 2)
+  {
+    return EXIT_FAILURE;
+  }
+  bool capped = true;
+  for (std::size_t k = 0; k + 1 < updates.size(); ++k)
+  {
+    capped = capped && updates[k].Dragging && updates[k].Iterations >= 1 &&
+      updates[k].Iterations <= scene.Filter->GetDragARAPIterations();
+  }
+  Check(capped, "every update of the drag runs with Dragging on and at most 2 iterations");
+  const Update& dragEnd = updates[updates.size() - 2];
+  const Update& released = updates.back();
+  Check(!released.Dragging && !scene.Filter->GetDragging(), "the release turns Dragging off");
+  Check(released.Energy <= dragEnd.Energy * (1.0 + 1e-12), "the release's update lowers the energy");
+
+  // The same pose, converged.
+  vtkNew<vtkLaplacianDeformationFilter> converged;
+  converged->SetInputData(scene.Rest);
+  converged->SetHandleCenter(scene.Filter->GetHandleCenter());
+  converged->SetHandleRadius(scene.Filter->GetHandleRadius());
+  converged->SetROIRadius(scene.Filter->GetROIRadius());
+  converged->SetHandleTransform(scene.Filter->GetHandleTransform());
+  converged->SetRotationModeToAsRigidAsPossible();
+  converged->SetARAPIterations(10000);
+  converged->SetConvergence(1e-12);
+  converged->Update();
+  const double best = converged->GetARAPEnergy();
+  std::cout << "ARAP drag: iterations";
+  for (const Update& update : updates)
+  {
+    std::cout << " " << update.Iterations;
+  }
+  std::cout << "; energy over converged at the drag's end " << dragEnd.Energy / best
+            << ", after the release " << released.Energy / best << "\n";
+  Check(best > 0.0 && dragEnd.Energy <= 1.05 * best, "the drag ends within 5% of converged");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -824,7 +908,8 @@ int main(int argc, char* argv[])
     { "TranslucentHandle", [&] { return TranslucentHandle(argc, argv); } },
     { "RotateAboutEachAxis", RotateAboutEachAxis },
     { "ConstrainedMoveAndWheel", ConstrainedMoveAndWheel },
-    { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups } };
+    { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups },
+    { "ARAPDragCapsIterations", ARAPDragCapsIterations } };
   const auto found = cases.find(argc > 1 ? argv[1] : "");
   if (found != cases.end())
   {
