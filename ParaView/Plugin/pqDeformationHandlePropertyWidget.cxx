@@ -148,9 +148,9 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
     &pqDeformationHandlePropertyWidget::commitBeforePlacing);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::startInteraction, this,
-    &pqDeformationHandlePropertyWidget::leaveRendersToAutoApply);
+    &pqDeformationHandlePropertyWidget::beginAutoApplyDrag);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
-    &pqDeformationHandlePropertyWidget::restoreInteractionRenders);
+    &pqDeformationHandlePropertyWidget::endAutoApplyDrag);
 
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::widgetVisibilityUpdated, this,
     &pqDeformationHandlePropertyWidget::showGroupHandles);
@@ -406,14 +406,14 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
     // A click on the surface placed this handle too: only the first handle follows clicks.
     vtkSMPropertyHelper(widget, "Center").Set(rest, 3);
     this->showGroupMotion(group);
-    this->restoreInteractionRenders();
+    this->endAutoApplyDrag();
     return;
   }
   // As the first handle's drags: Auto Apply applies every move and renders alone meanwhile.
   // (The first handle's start and end signals would also commit on a placement: not here.)
   if (event == vtkCommand::StartInteractionEvent)
   {
-    this->leaveRendersToAutoApply();
+    this->beginAutoApplyDrag();
     return;
   }
   std::array<double, 6> motion;
@@ -426,11 +426,11 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
   Q_EMIT this->changeFinished();
   if (event == vtkCommand::EndInteractionEvent)
   {
-    this->restoreInteractionRenders();
+    this->endAutoApplyDrag();
   }
 }
 
-void pqDeformationHandlePropertyWidget::leaveRendersToAutoApply()
+void pqDeformationHandlePropertyWidget::beginAutoApplyDrag()
 {
   // With Auto Apply, every move is applied and the view rendered with the new surface and
   // handle: the render the widget asks for first would show the old surface, and costs as much
@@ -445,18 +445,26 @@ void pqDeformationHandlePropertyWidget::leaveRendersToAutoApply()
   this->SavedRenderOnInteraction = vtkSMPropertyHelper(property).GetAsInt();
   vtkSMPropertyHelper(property).Set(0);
   view->getViewProxy()->UpdateVTKObjects();
+  // As the VTK widget does: a few as-rigid-as-possible iterations a frame, converged on release.
+  this->proxy()->InvokeCommand("DraggingOn");
 }
 
-void pqDeformationHandlePropertyWidget::restoreInteractionRenders()
+void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
 {
-  pqView* view = this->view();
-  if (this->SavedRenderOnInteraction < 0 || !view)
+  if (this->SavedRenderOnInteraction < 0)
   {
     return;
   }
-  vtkSMPropertyHelper(view->getViewProxy(), "EnableRenderOnInteraction")
-    .Set(this->SavedRenderOnInteraction);
-  view->getViewProxy()->UpdateVTKObjects();
+  // The filter is modified on the server alone: mark the pipeline so that the render updates it.
+  this->proxy()->InvokeCommand("DraggingOff");
+  this->proxy()->MarkModified(this->proxy());
+  pqView* view = this->view();
+  if (view)
+  {
+    vtkSMPropertyHelper(view->getViewProxy(), "EnableRenderOnInteraction")
+      .Set(this->SavedRenderOnInteraction);
+    view->getViewProxy()->UpdateVTKObjects();
+  }
   this->SavedRenderOnInteraction = -1;
   this->render();
 }

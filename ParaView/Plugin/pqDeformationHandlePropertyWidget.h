@@ -60,8 +60,8 @@ protected Q_SLOTS:
   void commitEdit();
   void rememberEdit();
   void commitBeforePlacing();
-  void leaveRendersToAutoApply();
-  void restoreInteractionRenders();
+  void beginAutoApplyDrag();
+  void endAutoApplyDrag();
   // After the filter updated: one handle per further group, at its rest centroid.
   void updateGroupHandles();
   void showGroupHandles(bool visible);

@@ -5,7 +5,8 @@ move the handle through its properties; compare the render view, with the projec
 widget in it, with the baseline; then drive that widget with mouse events sent to the view's
 interactor, as Qt would:
   - a drag of the sphere moves the handle with the cursor, and, once applied, the output's
-    handle points, with no refactorization;
+    handle points, with no refactorization; with Auto Apply, the filter's Dragging is on during
+    the drag (a few ARAP iterations a frame) and off after it;
   - a sweep along the handle's z ring (not the view axis) turns it by the angle swept;
   - a click on the surface puts the handle centre on the clicked point and commits the edit;
   - in array mode with a second handle group, that group's own handle appears at its centroid,
@@ -64,13 +65,17 @@ try:
     renders = [0]
     view.GetRenderWindow().AddObserver("EndEvent", lambda *_: renders.__setitem__(0, renders[0] + 1))
 
+    dragging = []  # the filter's Dragging after each move of the last drag
+
     def drag(path, steps=12):
         """Returns the number of renders during the moves."""
         send("MouseMoveEvent", path(0.0))
         send("LeftButtonPressEvent", path(0.0))
         renders[0] = 0
+        dragging.clear()
         for k in range(1, steps + 1):
             send("MouseMoveEvent", path(k / steps))
+            dragging.append(info("Dragging"))
         during = renders[0]
         send("LeftButtonReleaseEvent", path(1.0))
         return during
@@ -111,6 +116,8 @@ try:
     settings.AutoApply = 0
     check(during == 0 and view.GetProperty("EnableRenderOnInteraction").GetData() == 1,
           f"with Auto Apply, the drag leaves rendering to it ({during} renders), then restores the view's")
+    check(dragging == [1] * 12 and info("Dragging") == 0,
+          f"and turns the filter's Dragging on during it ({dragging}), off after it")
     translation = unchecked("HandleTranslation")
     moved = [c + t for c, t in zip(unchecked("HandleCenter"), translation)]
     landed = display(moved)
