@@ -461,6 +461,43 @@ TEST(SparseCholesky, FewColumnSolvesMatchTheBlasPathInParallel)
   }
 }
 
+extern "C"
+{
+  int omp_get_max_active_levels() __attribute__((weak));
+  void omp_set_max_active_levels(int levels) __attribute__((weak));
+}
+
+TEST(SparseCholesky, FactorizationsLeaveTheOpenMPSettingAsTheyFoundIt)
+{
+  // CHOLMOD's OpenMP loops run on the calling thread during a factorization (its
+  // max-active-levels is 0): afterwards each thread's own value is back, also when
+  // factorizations overlap on two threads.
+  if (!SparseCholesky::IsAvailable(SolverBackend::Cholmod) || !omp_get_max_active_levels ||
+    !omp_set_max_active_levels)
+  {
+    GTEST_SKIP() << "no CHOLMOD or no OpenMP runtime loaded";
+  }
+  const SurfaceMesh grid = MakeGrid(60, 60, 1.0, Bumps);
+  std::vector<Eigen::Triplet<double>> triplets;
+  AddShiftedGraphLaplacian(grid, 0, triplets);
+  Eigen::SparseMatrix<double> matrix(grid.GetNumberOfVertices(), grid.GetNumberOfVertices());
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  const int before = omp_get_max_active_levels();
+  auto factorize = [&matrix](int levels) {
+    omp_set_max_active_levels(levels);
+    for (int k = 0; k < 20; ++k)
+    {
+      SparseCholesky factor;
+      EXPECT_EQ(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD), "");
+    }
+    EXPECT_EQ(omp_get_max_active_levels(), levels);
+  };
+  std::thread other(factorize, 2);
+  factorize(3);
+  other.join();
+  omp_set_max_active_levels(before);
+}
+
 TEST(SparseCholesky, BlockOrderingsSolveTheCoupledSystem)
 {
   // A grid Laplacian with x, y, z coupled at every vertex (kron(L, C) + shift), given by its
