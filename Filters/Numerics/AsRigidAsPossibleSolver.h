@@ -97,7 +97,8 @@ class AsRigidAsPossibleSolver
 {
 public:
   /// Assembles and factors L_ff. Returns an error message, empty on success.
-  std::string Build(const SurfaceMesh& mesh, const EditRegion& region, const DeformationOptions& options);
+  std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
+    const DeformationOptions& options, const ParallelFor& loop = SerialFor);
 
   /// Iterates from `iterate`, whose handle rows are first set to their targets (after the
   /// extrapolation, if any). `energies`, if given, receives the energy after each iteration.

@@ -231,7 +231,7 @@ std::string LaplacianEditor::BuildArap()
 {
   auto arap = std::make_unique<AsRigidAsPossibleSolver>();
   ++this->NumberOfFactorizationAttempts;
-  const std::string error = arap->Build(*this->Mesh, this->Region, this->SystemBuiltFrom);
+  const std::string error = arap->Build(*this->Mesh, this->Region, this->SystemBuiltFrom, this->Loop);
   if (!error.empty())
   {
     return error;
