@@ -145,6 +145,7 @@ struct Options
   int Iterations = 1;
   bool Linear = false;
   bool Extrapolation = true;
+  bool Dragging = false;
   bool CompareCGAL = false;
   int ARAPIterations = 20;
   bool Help = false;
@@ -170,6 +171,8 @@ vertices: setup (selection, assembly, factorization) and handle moves. Prints on
   --arap-iterations K     as-rigid-as-possible iterations per move (20)
   --linear                implicit mode without its rigid step (PreserveDetailScale off)
   --no-extrapolation      as-rigid-as-possible updates start from the last result itself
+  --dragging              the moves are a drag (the filter's Dragging on, as the widget sets it):
+                          at most DragARAPIterations (2) an update, then one update on release
   --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
   --help                  this text
 )";
@@ -232,6 +235,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.Linear = true;
     else if (arg == "--no-extrapolation")
       options.Extrapolation = false;
+    else if (arg == "--dragging")
+      options.Dragging = true;
     else if (arg == "--compare-cgal")
       options.CompareCGAL = true;
     else if (arg[0] != '-' && options.Mesh.empty())
@@ -268,6 +273,9 @@ struct Measurement
   double ARAPIterations = 0.0;
   std::vector<double> ARAPIterationsPerMove;
   double ARAPEnergyRatio = 0.0;
+  // With --dragging: the update on release, its iterations and its energy over converged.
+  int ReleaseIterations = 0;
+  double ReleasedEnergy = 0.0;
 
   std::string Json() const
   {
@@ -288,6 +296,11 @@ struct Measurement
       }
       json << "]"
            << ", \"arap_energy_over_converged\": " << this->ARAPEnergyRatio;
+      if (this->ReleasedEnergy > 0.0)
+      {
+        json << ", \"release_iterations\": " << this->ReleaseIterations
+             << ", \"released_energy_over_converged\": " << this->ReleasedEnergy;
+      }
     }
     return json.str();
   }
@@ -330,6 +343,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     return result;
   }
   std::vector<double> moves, updates, arapIterations;
+  filter->SetDragging(options.Dragging);
   for (int move = 1; move <= options.Moves; ++move)
   {
     const double s = diagonal * move / options.Moves;
@@ -349,12 +363,20 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   {
     // The drag's last energy against the optimum at that pose (the drag's result, iterated on).
     const double dragged = filter->GetARAPEnergy();
+    if (options.Dragging)
+    {
+      filter->DraggingOff(); // the release: one update with ARAPIterations
+      filter->Update();
+      result.ReleasedEnergy = filter->GetARAPEnergy();
+      result.ReleaseIterations = filter->GetNumberOfARAPIterations();
+    }
     filter->SetARAPIterations(1000);
     filter->SetConvergence(1e-8);
     filter->Update();
     result.ARAPIterations = Median(arapIterations);
     result.ARAPIterationsPerMove = arapIterations;
     result.ARAPEnergyRatio = filter->GetARAPEnergy() > 0.0 ? dragged / filter->GetARAPEnergy() : 1.0;
+    result.ReleasedEnergy /= filter->GetARAPEnergy() > 0.0 ? filter->GetARAPEnergy() : 1.0;
   }
   result.Output = filter->GetOutput();
   return result;
