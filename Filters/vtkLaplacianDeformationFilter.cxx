@@ -755,9 +755,10 @@ void vtkLaplacianDeformationFilter::SetDragging(vtkTypeBool dragging)
     return;
   }
   this->Dragging = dragging;
+  this->SettleAfterDrag = !dragging;
   if (!dragging)
   {
-    this->Modified(); // the pose the drag left converges on the next update
+    this->Modified(); // the next update settles the pose the drag left
   }
 }
 
@@ -776,7 +777,8 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   rotation.Formulation.AllowScaling = paper;
   rotation.Arap.MaximumIterations =
     this->Dragging ? std::min(this->DragARAPIterations, this->ARAPIterations) : this->ARAPIterations;
-  rotation.Arap.Tolerance = this->Convergence;
+  rotation.Arap.Tolerance = this->SettleAfterDrag ? 0.0 : this->Convergence;
+  this->SettleAfterDrag = false;
   rotation.Arap.Accelerate = this->Acceleration != 0;
   rotation.Arap.Extrapolate = this->Extrapolation != 0;
 

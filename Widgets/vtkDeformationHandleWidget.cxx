@@ -501,7 +501,7 @@ void vtkDeformationHandleWidget::EndSelectAction(vtkAbstractWidget* widget)
   self->Interacting = false;
   if (self->DeformationFilter)
   {
-    self->DeformationFilter->DraggingOff(); // the render below iterates on at the released pose
+    self->DeformationFilter->DraggingOff(); // the render below settles the released shape
   }
   self->ReleaseFocus();
   self->EventCallbackCommand->SetAbortFlag(1);

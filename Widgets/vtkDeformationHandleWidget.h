@@ -8,8 +8,8 @@
  * during a drag. Only moving the handle re-solves; the radii reach the filter when a resize
  * ends, so the region is refactored once per resize. A drag turns the filter's Dragging on
  * and, on release, off: in the as-rigid-as-possible mode the frames of a drag then run a few
- * iterations each, and the update after the release iterates on as the filter's
- * ARAPIterations and Convergence allow.
+ * iterations each, and the update after the release settles the shape with the filter's
+ * ARAPIterations in full.
  *
  * Default bindings (left button), set in the event translator so that applications can rebind
  * them (GetEventTranslator()->SetTranslation(...)):

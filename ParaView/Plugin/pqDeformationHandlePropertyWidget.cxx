@@ -445,7 +445,7 @@ void pqDeformationHandlePropertyWidget::beginAutoApplyDrag()
   this->SavedRenderOnInteraction = vtkSMPropertyHelper(property).GetAsInt();
   vtkSMPropertyHelper(property).Set(0);
   view->getViewProxy()->UpdateVTKObjects();
-  // As the VTK widget does: a few as-rigid-as-possible iterations a frame, more on release.
+  // As the VTK widget does: a few as-rigid-as-possible iterations a frame, settled on release.
   this->proxy()->InvokeCommand("DraggingOn");
 }
 

@@ -800,7 +800,7 @@ int ARAPDragCapsIterations()
 {
   // In the as-rigid-as-possible mode a drag turns the filter's Dragging on: each frame runs at
   // most DragARAPIterations, the drag never refactors, and the release turns it off, so that
-  // one more update iterates on with ARAPIterations.
+  // one more update settles the shape with ARAPIterations in full.
   Scene scene;
   scene.Filter->SetRotationModeToAsRigidAsPossible();
   scene.Filter->Update();
@@ -875,6 +875,9 @@ int ARAPDragCapsIterations()
   std::cout << "; energy over converged at the drag's end " << dragEnd.Energy / best
             << ", after the release " << released.Energy / best << "\n";
   Check(best > 0.0 && dragEnd.Energy <= 1.05 * best, "the drag ends within 5% of converged");
+  Check(released.Iterations == scene.Filter->GetARAPIterations() &&
+      released.Energy <= 1.01 * best,
+    "the release settles: ARAPIterations in full, within 1% of converged");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
