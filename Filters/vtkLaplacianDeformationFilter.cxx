@@ -338,9 +338,20 @@ void vtkLaplacianDeformationFilter::EditSurface(vtkPolyData* input, vtkPolyData*
   }
   vtkPolyData* rest = this->RestSurface(input);
   output->ShallowCopy(rest);
+  // Progress after each stage that may take seconds (graph, region and its factor, rotation
+  // model and its factor); each stage is skipped when its cache holds.
   this->UpdateProgress(0.1);
-  if (!this->UpdateSurfaceGraph(rest) || !this->UpdateRegion(rest) ||
-    !this->UpdateRotationModel() || this->GetAbortExecute())
+  if (!this->UpdateSurfaceGraph(rest) || this->GetAbortExecute())
+  {
+    return;
+  }
+  this->UpdateProgress(0.3);
+  if (!this->UpdateRegion(rest) || this->GetAbortExecute())
+  {
+    return;
+  }
+  this->UpdateProgress(0.6);
+  if (!this->UpdateRotationModel() || this->GetAbortExecute())
   {
     return;
   }
