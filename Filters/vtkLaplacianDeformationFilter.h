@@ -661,7 +661,7 @@ protected:
   vtkTypeBool PreserveDetailScale = 1;
   int ImplicitFormulation = IMPLICIT_PER_EDGE;
   int ARAPIterations = 20;
-  vtkTypeBool Dragging = false;
+  vtkTypeBool Dragging = 0;
   bool SettleAfterDrag = false; // the next update runs ARAPIterations in full
   int DragARAPIterations = 2;
   double Convergence = 1e-3;

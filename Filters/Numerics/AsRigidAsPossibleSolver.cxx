@@ -161,7 +161,12 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   }
 
   // The upper triangle, column by column (rows sorted, the diagonal last), assembled in place.
+  // Column u holds the unknowns of u's ring that come before u.
   const int free = static_cast<int>(this->FreeRows.size());
+  auto aboveOf = [this](int u, int k) {
+    const int other = this->UnknownOfPatch[this->Neighbors[k]];
+    return other >= 0 && other < u ? other : -1;
+  };
   std::vector<int> columnStart(free + 1, 0);
   for (int u = 0; u < free; ++u)
   {
@@ -169,8 +174,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
     int above = 0;
     for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
     {
-      const int other = this->UnknownOfPatch[this->Neighbors[k]];
-      above += other >= 0 && other < u ? 1 : 0;
+      above += aboveOf(u, k) >= 0 ? 1 : 0;
     }
     columnStart[u + 1] = columnStart[u] + above + 1;
   }
@@ -187,8 +191,8 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
         diagonal += this->Weights[k];
-        const int other = this->UnknownOfPatch[this->Neighbors[k]];
-        if (other >= 0 && other < u)
+        const int other = aboveOf(u, k);
+        if (other >= 0)
         {
           column.emplace_back(other, -this->Weights[k]);
         }

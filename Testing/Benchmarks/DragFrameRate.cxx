@@ -128,7 +128,14 @@ int main(int argc, char* argv[])
     auto& t = *static_cast<Trace*>(data);
     const auto now = std::chrono::steady_clock::now();
     const double frame = std::chrono::duration<double>(now - t.Last).count();
-    (t.Released ? t.ReleaseSeconds : t.Slowest) = t.Released ? frame : std::max(t.Slowest, frame);
+    if (t.Released)
+    {
+      t.ReleaseSeconds = frame;
+    }
+    else
+    {
+      t.Slowest = std::max(t.Slowest, frame);
+    }
     t.Last = now;
   });
   vtkNew<vtkCallbackCommand> filterEnd;

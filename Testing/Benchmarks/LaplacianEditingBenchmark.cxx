@@ -363,11 +363,12 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   {
     // The drag's last energy against the optimum at that pose (the drag's result, iterated on).
     const double dragged = filter->GetARAPEnergy();
+    double released = 0.0;
     if (options.Dragging)
     {
       filter->DraggingOff(); // the release: one update with ARAPIterations
       filter->Update();
-      result.ReleasedEnergy = filter->GetARAPEnergy();
+      released = filter->GetARAPEnergy();
       result.ReleaseIterations = filter->GetNumberOfARAPIterations();
     }
     filter->SetARAPIterations(1000);
@@ -375,8 +376,9 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     filter->Update();
     result.ARAPIterations = Median(arapIterations);
     result.ARAPIterationsPerMove = arapIterations;
-    result.ARAPEnergyRatio = filter->GetARAPEnergy() > 0.0 ? dragged / filter->GetARAPEnergy() : 1.0;
-    result.ReleasedEnergy /= filter->GetARAPEnergy() > 0.0 ? filter->GetARAPEnergy() : 1.0;
+    const double converged = filter->GetARAPEnergy();
+    result.ARAPEnergyRatio = converged > 0.0 ? dragged / converged : 1.0;
+    result.ReleasedEnergy = converged > 0.0 ? released / converged : 0.0;
   }
   result.Output = filter->GetOutput();
   return result;

@@ -8,7 +8,7 @@
 // its frame; an eighth moves it along one axis and resizes the region with the wheel; a ninth
 // checks the accessors ParaView drives against the filter's handle properties; a tenth drags
 // two handle groups with a widget each, commits and undoes; an eleventh drags in the
-// as-rigid-as-possible mode, a few iterations a frame, and converges on the release.
+// as-rigid-as-possible mode, a few iterations a frame, and settles the shape on the release.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 #include "FilterTestHelpers.h"
