@@ -92,12 +92,10 @@ std::string DeformationSystem::Build(
     rhs.middleCols<4>(3 + 4 * g) = this->HandleBasis(g);
   }
   const Eigen::MatrixXd solution = this->Factor.Solve(rhs);
-  this->RestSolution = solution.leftCols<3>();
-  this->GroupResponses.resize(groups);
-  for (int g = 0; g < groups; ++g)
-  {
-    this->GroupResponses[g] = solution.middleCols<4>(3 + 4 * g);
-  }
+  this->Responses.Coupled = false; // each coordinate responds to its own row of a map alike
+  this->Responses.Offsets = solution.leftCols<3>();
+  this->Responses.Responses = solution.rightCols(4 * groups);
+  this->NumberOfHandleGroups = groups;
   return {};
 }
 
@@ -178,13 +176,21 @@ Positions DeformationSystem::ConstraintRightHandSide(const std::vector<AffineMap
 
 Positions DeformationSystem::Solve(const std::vector<AffineMap>& handleMaps) const
 {
-  Positions solution = this->RestSolution;
-  for (std::size_t g = 0; g < this->GroupResponses.size(); ++g)
+  return this->Responses.Evaluate(HandleMapParameters(handleMaps, this->NumberOfHandleGroups));
+}
+
+AffineRows DeformationSystem::GetAffineRows(const std::vector<int>& rows) const
+{
+  AffineRows affine;
+  affine.Coupled = false;
+  affine.Offsets.resize(static_cast<Eigen::Index>(rows.size()), 3);
+  affine.Responses.resize(static_cast<Eigen::Index>(rows.size()), this->Responses.Responses.cols());
+  for (std::size_t i = 0; i < rows.size(); ++i)
   {
-    const AffineMap map = g < handleMaps.size() ? handleMaps[g] : AffineMap::Identity();
-    solution.noalias() += this->GroupResponses[g] * map.transpose();
+    affine.Offsets.row(i) = this->Responses.Offsets.row(rows[i]);
+    affine.Responses.row(i) = this->Responses.Responses.row(rows[i]);
   }
-  return solution;
+  return affine;
 }
 
 Positions DeformationSystem::SolveDirect(const std::vector<AffineMap>& handleMaps) const

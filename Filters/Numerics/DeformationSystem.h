@@ -13,6 +13,7 @@
 #ifndef LaplacianEditing_DeformationSystem_h
 #define LaplacianEditing_DeformationSystem_h
 
+#include "AffineRows.h"
 #include "EditRegion.h"
 #include "LaplacianOperator.h"
 #include "SparseCholesky.h"
@@ -73,6 +74,9 @@ public:
   /// The same through the factor's triangular solves (the reference for Solve).
   Positions SolveDirect(const std::vector<AffineMap>& handleMaps) const;
 
+  /// Solve's affine form on some rows (indices into region.Vertices).
+  AffineRows GetAffineRows(const std::vector<int>& rows) const;
+
   /// The same with other differential coordinates, for example rotated ones.
   Positions SolveWithDifferentialCoordinates(const Positions& differentialCoordinates,
     const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor) const;
@@ -102,7 +106,7 @@ public:
   const Eigen::VectorXd& GetSquaredWeights() const { return this->SquaredWeights; }
   /// Handle group of each ROI vertex, -1 for others.
   const std::vector<int>& GetHandleGroups() const { return this->HandleGroups; }
-  int GetNumberOfHandleGroups() const { return static_cast<int>(this->GroupResponses.size()); }
+  int GetNumberOfHandleGroups() const { return this->NumberOfHandleGroups; }
   int GetNumberOfUnknowns() const { return static_cast<int>(this->RestPositions.rows()); }
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
@@ -125,9 +129,9 @@ private:
   std::vector<int> HandleGroups;
   // L^T (delta - fixed part) for the rest differential coordinates: constant per region.
   Positions RestRightHandSide;
-  // The solution with every handle map zero, and each group's n x 4 response.
-  Positions RestSolution;
-  std::vector<Eigen::MatrixXd> GroupResponses;
+  // The solution with every handle map zero, and each group's n x 4 response (AffineRows.h).
+  AffineRows Responses;
+  int NumberOfHandleGroups = 0;
 };
 }
 

@@ -408,6 +408,24 @@ Positions ImplicitSimilaritySystem::Solve(
   return positions;
 }
 
+AffineRows ImplicitSimilaritySystem::GetAffineRows(const std::vector<int>& rows) const
+{
+  // The unknowns are interleaved (x, y, z per vertex), and so are the responses' rows.
+  const Eigen::Index groups = static_cast<Eigen::Index>(this->GroupResponses.size());
+  AffineRows affine;
+  affine.Offsets.resize(static_cast<Eigen::Index>(rows.size()), 3);
+  affine.Responses.resize(3 * static_cast<Eigen::Index>(rows.size()), 12 * groups);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    affine.Offsets.row(i) = this->RestSolution.segment<3>(3 * rows[i]).transpose();
+    for (Eigen::Index g = 0; g < groups; ++g)
+    {
+      affine.Responses.block<3, 12>(3 * i, 12 * g) = this->GroupResponses[g].middleRows<3>(3 * rows[i]);
+    }
+  }
+  return affine;
+}
+
 Positions ImplicitSimilaritySystem::SolveDirect(
   const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const
 {

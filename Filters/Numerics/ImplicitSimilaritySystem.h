@@ -51,6 +51,9 @@ public:
   /// The same through the factor's triangular solves (the reference for Solve).
   Positions SolveDirect(const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const;
 
+  /// Solve's affine form on some rows (indices into the region's vertices).
+  AffineRows GetAffineRows(const std::vector<int>& rows) const;
+
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:

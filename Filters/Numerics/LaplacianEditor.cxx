@@ -243,6 +243,19 @@ std::string LaplacianEditor::BuildArap()
   return {};
 }
 
+bool LaplacianEditor::IsAffineInHandleMaps() const
+{
+  const RotationMode mode = this->Rotation.Mode;
+  return this->Ready &&
+    (mode == RotationMode::None || (mode == RotationMode::Implicit && !this->Rotation.PreserveDetailScale));
+}
+
+AffineRows LaplacianEditor::GetAffineRows(const std::vector<int>& rows) const
+{
+  return this->Rotation.Mode == RotationMode::Implicit ? this->Implicit->GetAffineRows(rows)
+                                                        : this->System.GetAffineRows(rows);
+}
+
 EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions)
 {
   EditStatus status;

@@ -119,6 +119,11 @@ public:
   /// successful Update with the same rotation options.
   EditStatus Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions);
 
+  /// Whether Solve is affine in the handle maps (None, and Implicit without the rigid
+  /// correction), and then its affine form on some rows (indices into GetRegion().Vertices).
+  bool IsAffineInHandleMaps() const;
+  AffineRows GetAffineRows(const std::vector<int>& rows) const;
+
   /// As-rigid-as-possible mode: what the last solve did.
   const ArapResult& GetLastArapResult() const { return this->LastArap; }
 

@@ -137,3 +137,58 @@ TEST_F(EditorCase, AFailedRequestIsRememberedUntilItChanges)
   labeled.LabelsVersion = 2;
   EXPECT_EQ(this->Update(labeled), RebuiltRegion | RebuiltSystem);
 }
+
+TEST_F(EditorCase, AffineRowsReproduceTheSolveWhereItIsAffine)
+{
+  // A process that holds some of the region's points places them from their affine rows and
+  // the maps' entries alone. Two handle groups with general maps: the rows must agree with the
+  // solve to 1e-12 relative in the None mode and the linear implicit one; no other mode is
+  // affine.
+  RegionRequest labeled;
+  labeled.Selection = RegionRequest::Kind::Labeled;
+  labeled.LabelsVersion = 1;
+  auto twoGroups = [this] {
+    std::vector<int> labels = this->Labels();
+    for (int v = 0; v < this->Mesh->GetNumberOfVertices(); ++v)
+    {
+      labels[v] = (this->Mesh->GetPositions()[v] - Vector3(0.7, 0.5, 0.0)).norm() < 0.06 ? 3 : labels[v];
+    }
+    return labels;
+  };
+  ASSERT_TRUE(this->Editor.UpdateRegion(labeled, twoGroups, this->System).Ok());
+  ASSERT_EQ(this->Editor.GetRegion().NumberOfHandleGroups, 2);
+  AffineMap first, second;
+  first << 0.9, -0.3, 0.1, 0.2, 0.35, 0.95, 0.05, -0.1, -0.1, 0.02, 1.1, 0.3;
+  second << 1.0, 0.2, 0.0, -0.05, -0.2, 1.0, 0.1, 0.0, 0.0, -0.1, 0.9, 0.15;
+  const std::vector<AffineMap> maps = { first, second };
+  std::vector<int> rows; // every third row, backwards
+  for (int k = this->Editor.GetRegion().GetNumberOfVertices() - 1; k >= 0; k -= 3)
+  {
+    rows.push_back(k);
+  }
+  auto check = [&](RotationMode mode, bool preserveDetailScale, bool affine) {
+    this->Rotation.Mode = mode;
+    this->Rotation.PreserveDetailScale = preserveDetailScale;
+    ASSERT_TRUE(this->Editor.UpdateRotationModel(this->Rotation).Ok());
+    ASSERT_EQ(this->Editor.IsAffineInHandleMaps(), affine);
+    if (!affine)
+    {
+      return;
+    }
+    Positions solved;
+    ASSERT_TRUE(this->Editor.Solve(maps, solved).Ok());
+    const Positions placed =
+      this->Editor.GetAffineRows(rows).Evaluate(HandleMapParameters(maps, 2));
+    ASSERT_EQ(placed.rows(), static_cast<Eigen::Index>(rows.size()));
+    double error = 0.0;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+      error = std::max(error, (placed.row(i) - solved.row(rows[i])).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(error, 1e-12 * solved.cwiseAbs().maxCoeff());
+  };
+  check(RotationMode::None, true, true);
+  check(RotationMode::Implicit, false, true);
+  check(RotationMode::Implicit, true, false);
+  check(RotationMode::Explicit, true, false);
+}
