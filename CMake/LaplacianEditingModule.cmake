@@ -18,7 +18,8 @@ list(TRANSFORM classes PREPEND "${_le_root}/")
 # Adapters between vtkPolyData and the core, not part of the module's API.
 set(private_classes
   Filters/vtkLaplacianSurfaceAdapter
-  Filters/vtkLaplacianNormalRefresher)
+  Filters/vtkLaplacianNormalRefresher
+  Filters/vtkLaplacianPieceEdit)
 list(TRANSFORM private_classes PREPEND "${_le_root}/")
 set(private_sources ${private_classes})
 set(private_headers ${private_classes})

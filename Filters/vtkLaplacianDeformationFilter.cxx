@@ -3,6 +3,7 @@
 #include "LaplacianEditor.h"
 #include "SurfaceMesh.h"
 #include "vtkLaplacianNormalRefresher.h"
+#include "vtkLaplacianPieceEdit.h"
 #include "vtkLaplacianSurfaceAdapter.h"
 
 #include "vtkBoundingBox.h"
@@ -180,6 +181,10 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   // The current handle maps and result, in the core's frame.
   std::vector<le::AffineMap> Maps;
   le::Positions Solution;
+  // Whether the last EditSurface solved an edit, and a number bumped whenever the edit's
+  // region, system or rotation model is rebuilt.
+  bool Edited = false;
+  unsigned long ModelVersion = 0;
 };
 
 vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
@@ -331,6 +336,7 @@ int vtkLaplacianDeformationFilter::RequestData(
 void vtkLaplacianDeformationFilter::EditSurface(vtkPolyData* input, vtkPolyData* output)
 {
   this->ResetStatistics();
+  this->Internals->Edited = false;
   output->ShallowCopy(input);
   if (!this->CheckInput(input))
   {
@@ -751,6 +757,7 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   }
   if (status.Work != le::RebuiltNothing)
   {
+    ++internals.ModelVersion;
     internals.Surface.IndexRegion(internals.Editor.GetRegion());
     this->FindGroupCenters();
     internals.Normals.Index(rest, surface);
@@ -803,6 +810,7 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
   }
   if (status.Work != le::RebuiltNothing)
   {
+    ++internals.ModelVersion;
     this->SetupTime += SecondsSince(start);
     const bool firstOrderEnergy = this->RotationMode == ROTATION_AS_RIGID_AS_POSSIBLE ||
       (this->RotationMode == ROTATION_IMPLICIT && !paper);
@@ -859,7 +867,16 @@ bool vtkLaplacianDeformationFilter::Solve()
   const bool arap = this->RotationMode == ROTATION_AS_RIGID_AS_POSSIBLE;
   this->NumberOfARAPIterations = arap ? internals.Editor.GetLastArapResult().Iterations : 0;
   this->ARAPEnergy = arap ? internals.Editor.GetLastArapResult().Energy : 0.0;
-  return status.Ok() ? true : this->Fail("Cannot edit: " + status.Error + ".");
+  if (!status.Ok())
+  {
+    return this->Fail("Cannot edit: " + status.Error + ".");
+  }
+  internals.Edited = true;
+  const le::EditRegion& region = internals.Editor.GetRegion();
+  this->NumberOfROIVertices = region.GetNumberOfVertices();
+  this->NumberOfHandleVertices = static_cast<int>(
+    std::count(region.Roles.begin(), region.Roles.end(), le::VertexRole::Handle));
+  return true;
 }
 
 void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
@@ -869,12 +886,8 @@ void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* 
   const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
   output->SetPoints(surface.MovePoints(rest->GetPoints(), internals.Solution));
   internals.Normals.Refresh(
-    output, *surface.GetMesh(), surface.GetRowOfVertex(), internals.Solution);
+    output, surface.GetMesh()->GetPositions(), surface.GetRowOfVertex(), internals.Solution);
   this->AddEditRoles(output, surface.GetRoles());
-  const le::EditRegion& region = internals.Editor.GetRegion();
-  this->NumberOfROIVertices = region.GetNumberOfVertices();
-  this->NumberOfHandleVertices = static_cast<int>(
-    std::count(region.Roles.begin(), region.Roles.end(), le::VertexRole::Handle));
   this->SolveTime += SecondsSince(start);
 }
 
@@ -891,6 +904,18 @@ void vtkLaplacianDeformationFilter::AddEditRoles(vtkPolyData* output, vtkDataArr
   {
     pointData->SetActiveScalars("EditRole"); // a default mapper then shows the roles
   }
+}
+
+bool vtkLaplacianDeformationFilter::GetEditState(vtkLaplacianEditState& state) const
+{
+  const vtkInternals& internals = *this->Internals;
+  state.Surface = &internals.Surface;
+  state.Normals = &internals.Normals;
+  state.Editor = &internals.Editor;
+  state.Maps = &internals.Maps;
+  state.Solution = &internals.Solution;
+  state.ModelVersion = internals.ModelVersion;
+  return internals.Edited;
 }
 
 void vtkLaplacianDeformationFilter::CommitEdit()

@@ -56,6 +56,7 @@
 class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
+struct vtkLaplacianEditState;
 class vtkIntArray;
 class vtkPoints;
 class vtkSelection;
@@ -641,6 +642,18 @@ protected:
    */
   void AddEditRoles(vtkPolyData* output, vtkDataArray* roles);
 
+  /**
+   * Writes the solved edit into `output` (a shallow copy of `rest`): the moved points, the
+   * refreshed normals and EditRole. The parallel filter's ranks write their own pieces instead.
+   */
+  virtual void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
+
+  /**
+   * After EditSurface: the edit it solved, for the parallel filter to share out among the pieces
+   * (see vtkLaplacianPieceEdit.h); false when it solved none.
+   */
+  bool GetEditState(vtkLaplacianEditState& state) const;
+
   int SelectionMode = SELECTION_GEODESIC;
   int RadiusUnits = RADIUS_ABSOLUTE;
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
@@ -706,7 +719,6 @@ private:
   // The handle groups' rest centroids, once per region (GetHandleGroupCenter reads them).
   void FindGroupCenters();
   bool Solve();
-  void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
   bool Fail(const std::string& message);
   void ResetStatistics();
   // WholeDiagonal where set, else `ownDiagonal`: what radii in diagonal units refer to.

@@ -12,6 +12,7 @@
 #include "vtkSmartPointer.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace le = LaplacianEditing;
 
@@ -56,27 +57,29 @@ void vtkLaplacianNormalRefresher::Index(vtkPolyData* input, const vtkLaplacianSu
     }
   }
   this->Points.clear();
-  this->PointVertices.clear();
+  this->PointTriangleOffsets.assign(1, 0);
+  this->PointTriangles.clear();
+  this->TriangleVertices.clear();
+  std::vector<int> slot(mesh.GetNumberOfTriangles(), -1);
   for (std::size_t i = 0; i < vertexOfPoint.size(); ++i)
   {
-    if (near[vertexOfPoint[i]])
+    const int v = vertexOfPoint[i];
+    if (!near[v])
     {
-      this->Points.push_back(surface.GetInputPoints()[i]);
-      this->PointVertices.push_back(vertexOfPoint[i]);
+      continue;
     }
-  }
-  this->Triangles.clear();
-  this->TriangleSlot.assign(mesh.GetNumberOfTriangles(), -1);
-  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
-  {
-    for (const int* t = mesh.TrianglesBegin(v); near[v] && t != mesh.TrianglesEnd(v); ++t)
+    this->Points.push_back(surface.GetInputPoints()[i]);
+    for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
     {
-      if (this->TriangleSlot[*t] < 0)
+      if (slot[*t] < 0)
       {
-        this->TriangleSlot[*t] = static_cast<int>(this->Triangles.size());
-        this->Triangles.push_back(*t);
+        slot[*t] = static_cast<int>(this->TriangleVertices.size() / 3);
+        const auto& triangle = mesh.GetTriangles()[*t];
+        this->TriangleVertices.insert(this->TriangleVertices.end(), triangle.begin(), triangle.end());
       }
+      this->PointTriangles.push_back(slot[*t]);
     }
+    this->PointTriangleOffsets.push_back(static_cast<int>(this->PointTriangles.size()));
   }
   // A polygon normal changes when one of its corners is in the ROI.
   this->Cells.clear();
@@ -98,11 +101,9 @@ void vtkLaplacianNormalRefresher::Index(vtkPolyData* input, const vtkLaplacianSu
   }
 }
 
-void vtkLaplacianNormalRefresher::Refresh(vtkPolyData* output, const le::SurfaceMesh& mesh,
+void vtkLaplacianNormalRefresher::Refresh(vtkPolyData* output, const std::vector<le::Vector3>& rest,
   const std::vector<int>& rowOfVertex, const le::Positions& solution) const
 {
-  // The moved position of a vertex is its ROI row's.
-  const std::vector<le::Vector3>& rest = mesh.GetPositions();
   auto position = [&](int v) -> le::Vector3 {
     const int k = rowOfVertex[v];
     return k >= 0 ? le::Vector3(solution.row(k).transpose()) : rest[v];
@@ -110,22 +111,21 @@ void vtkLaplacianNormalRefresher::Refresh(vtkPolyData* output, const le::Surface
   if (output->GetPointData()->GetNormals())
   {
     // Each triangle's (area-weighted) normal once, then their sums around each point.
-    std::vector<le::Vector3> triangleNormals(this->Triangles.size());
+    std::vector<le::Vector3> triangleNormals(this->TriangleVertices.size() / 3);
     vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
       [&](vtkIdType begin, vtkIdType end) {
         for (vtkIdType s = begin; s < end; ++s)
         {
-          const auto& tri = mesh.GetTriangles()[this->Triangles[s]];
-          triangleNormals[s] =
-            (position(tri[1]) - position(tri[0])).cross(position(tri[2]) - position(tri[0]));
+          const int* triangle = this->TriangleVertices.data() + 3 * s;
+          const le::Vector3 origin = position(triangle[0]);
+          triangleNormals[s] = (position(triangle[1]) - origin).cross(position(triangle[2]) - origin);
         }
       });
     RefreshNormalsArray(output->GetPointData(), this->Points, [&](vtkIdType r) {
-      const int v = this->PointVertices[r];
       le::Vector3 n = le::Vector3::Zero();
-      for (const int* t = mesh.TrianglesBegin(v); t != mesh.TrianglesEnd(v); ++t)
+      for (int j = this->PointTriangleOffsets[r]; j < this->PointTriangleOffsets[r + 1]; ++j)
       {
-        n += triangleNormals[this->TriangleSlot[*t]];
+        n += triangleNormals[this->PointTriangles[j]];
       }
       return n;
     });
@@ -141,4 +141,62 @@ void vtkLaplacianNormalRefresher::Refresh(vtkPolyData* output, const le::Surface
     }
     return n;
   });
+}
+
+vtkLaplacianNormalRefresher vtkLaplacianNormalRefresher::Restrict(
+  const std::function<vtkIdType(vtkIdType)>& pointId,
+  const std::function<vtkIdType(vtkIdType)>& cellId, std::vector<int>& vertices) const
+{
+  vtkLaplacianNormalRefresher part;
+  vertices.clear();
+  std::unordered_map<int, int> number;
+  auto renumber = [&](int v) {
+    const auto added = number.emplace(v, static_cast<int>(vertices.size()));
+    if (added.second)
+    {
+      vertices.push_back(v);
+    }
+    return added.first->second;
+  };
+  std::vector<int> slot(this->TriangleVertices.size() / 3, -1);
+  part.PointTriangleOffsets.assign(1, 0);
+  for (std::size_t r = 0; r < this->Points.size(); ++r)
+  {
+    const vtkIdType id = pointId(this->Points[r]);
+    if (id < 0)
+    {
+      continue;
+    }
+    part.Points.push_back(id);
+    for (int j = this->PointTriangleOffsets[r]; j < this->PointTriangleOffsets[r + 1]; ++j)
+    {
+      const int s = this->PointTriangles[j];
+      if (slot[s] < 0)
+      {
+        slot[s] = static_cast<int>(part.TriangleVertices.size() / 3);
+        for (int c = 0; c < 3; ++c)
+        {
+          part.TriangleVertices.push_back(renumber(this->TriangleVertices[3 * s + c]));
+        }
+      }
+      part.PointTriangles.push_back(slot[s]);
+    }
+    part.PointTriangleOffsets.push_back(static_cast<int>(part.PointTriangles.size()));
+  }
+  part.CellVertexOffsets.assign(1, 0);
+  for (std::size_t r = 0; r + 1 < this->CellVertexOffsets.size(); ++r)
+  {
+    const vtkIdType id = cellId(this->Cells[r]);
+    if (id < 0)
+    {
+      continue;
+    }
+    part.Cells.push_back(id);
+    for (int j = this->CellVertexOffsets[r]; j < this->CellVertexOffsets[r + 1]; ++j)
+    {
+      part.CellVertices.push_back(renumber(this->CellVertices[j]));
+    }
+    part.CellVertexOffsets.push_back(static_cast<int>(part.CellVertices.size()));
+  }
+  return part;
 }

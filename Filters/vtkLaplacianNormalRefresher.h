@@ -3,18 +3,20 @@
  * @brief   recomputes the output's point and cell normals where an edit moved the surface
  *          (not wrapped)
  *
- * Per region, Index finds the points whose normals the edit can change (the ROI and its ring)
- * and the polygons with a corner in the ROI. Refresh then copies the input's normals and
- * recomputes only those tuples, so all other normals stay bit-identical and a handle move costs
- * time in proportion to the region.
+ * Per region, Index finds the points whose normals the edit can change (the ROI and its ring),
+ * the triangles around them, and the polygons with a corner in the ROI. Refresh then copies the
+ * input's normals and recomputes only those tuples, so all other normals stay bit-identical and
+ * a handle move costs time in proportion to the region. The index refers to vertices only by
+ * number, so Restrict can cut out the part that one piece of a distributed surface needs.
  */
 #ifndef vtkLaplacianNormalRefresher_h
 #define vtkLaplacianNormalRefresher_h
 
-#include "SurfaceMesh.h"
+#include "Types.h"
 
 #include "vtkType.h"
 
+#include <functional>
 #include <vector>
 
 class vtkLaplacianSurfaceAdapter;
@@ -23,25 +25,57 @@ class vtkPolyData;
 class vtkLaplacianNormalRefresher
 {
 public:
-  /// After the surface's IndexRegion; `input` is the polydata it was built from.
+  /// After the surface's IndexRegion; `input` is the polydata it was built from. Vertices are
+  /// the surface's.
   void Index(vtkPolyData* input, const vtkLaplacianSurfaceAdapter& surface);
 
-  /// Refreshes the output's normals (where it has any) for the ROI moved to `solution`, in the
-  /// core's coordinates (normals do not depend on the frame's translation and scale).
-  void Refresh(vtkPolyData* output, const LaplacianEditing::SurfaceMesh& mesh,
+  /// Refreshes the output's normals (where it has any) with vertex v at rest[v], or at
+  /// solution's row rowOfVertex[v] where that is not -1 (the moved region), in the core's
+  /// coordinates (normals do not depend on the frame's translation and scale).
+  void Refresh(vtkPolyData* output, const std::vector<LaplacianEditing::Vector3>& rest,
     const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution) const;
 
+  /// The part of the index on the points and polygons that `pointId` and `cellId` map to
+  /// another data set's ids (-1: not in the part), with its vertices renumbered in order of
+  /// first use; `vertices` receives each new vertex's number here.
+  vtkLaplacianNormalRefresher Restrict(const std::function<vtkIdType(vtkIdType)>& pointId,
+    const std::function<vtkIdType(vtkIdType)>& cellId, std::vector<int>& vertices) const;
+
+  /// Calls `visit` on each of the index's arrays, always in the same order (to send it).
+  template <typename Visitor>
+  void VisitArrays(Visitor&& visit)
+  {
+    VisitArraysOf(*this, visit);
+  }
+  template <typename Visitor>
+  void VisitArrays(Visitor&& visit) const
+  {
+    VisitArraysOf(*this, visit);
+  }
+
 private:
-  // The points whose normals can change (input ids, and their surface vertices), the triangles around them (and each mesh triangle's
-  // slot among them, -1 if none), and the polygons to refresh with their surface vertices
-  // (offsets into CellVertices).
+  // The points whose normals can change (input ids) and, as offsets into PointTriangles, the
+  // triangles around each (slots of TriangleVertices, three vertices each); the polygons to
+  // refresh with their vertices (offsets into CellVertices).
   std::vector<vtkIdType> Points;
-  std::vector<int> PointVertices;
-  std::vector<int> Triangles;
-  std::vector<int> TriangleSlot;
+  std::vector<int> PointTriangleOffsets;
+  std::vector<int> PointTriangles;
+  std::vector<int> TriangleVertices;
   std::vector<vtkIdType> Cells;
   std::vector<int> CellVertexOffsets;
   std::vector<int> CellVertices;
+
+  template <typename Self, typename Visitor>
+  static void VisitArraysOf(Self& self, Visitor& visit)
+  {
+    visit(self.Points);
+    visit(self.PointTriangleOffsets);
+    visit(self.PointTriangles);
+    visit(self.TriangleVertices);
+    visit(self.Cells);
+    visit(self.CellVertexOffsets);
+    visit(self.CellVertices);
+  }
 };
 
 #endif

@@ -76,8 +76,9 @@ public:
   static void GetPolygons(
     vtkPolyData* input, std::vector<std::int64_t>& offsets, std::vector<std::int64_t>& connectivity);
 
-  /// Core units per input unit.
+  /// Core units per input unit, and the input point at the core's origin.
   double GetScale() const { return this->Scale; }
+  const LaplacianEditing::Vector3& GetCenter() const { return this->Center; }
   LaplacianEditing::Vector3 Normalize(const double p[3]) const;
   LaplacianEditing::Vector3 Denormalize(const LaplacianEditing::Vector3& p) const;
   /// x' = M x + t in input coordinates becomes x'_n = M x_n + s (M c + t - c).
@@ -89,6 +90,8 @@ public:
   /// Indexes the input points in the region (the points to write) and builds the EditRole array.
   void IndexRegion(const LaplacianEditing::EditRegion& region);
   const std::vector<int>& GetRowOfVertex() const { return this->RowOfVertex; }
+  /// The input points in the region, each with its ROI row.
+  const std::vector<std::pair<vtkIdType, int>>& GetRegionPoints() const { return this->RoiPoints; }
   vtkSignedCharArray* GetRoles() const { return this->Roles; }
   /// An EditRole array of `count` fixed points, with its colours (see GenerateEditRoles).
   static vtkSmartPointer<vtkSignedCharArray> NewRoles(vtkIdType count);

@@ -7,23 +7,23 @@
 #include "vtkCellData.h"
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
-#include "vtkDataSetAttributes.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkLaplacianPieceEdit.h"
 #include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSelection.h"
-#include "vtkSignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
+
+namespace le = LaplacianEditing;
 
 vtkStandardNewMacro(vtkPLaplacianDeformationFilter);
 
@@ -44,12 +44,20 @@ struct vtkPLaplacianDeformationFilter::vtkInternals
   std::vector<double> PieceTimes;
   std::vector<vtkIdType> PieceSizes;
   std::vector<vtkIdType> PieceCellSizes;
+  // Bumped whenever the parts are gathered anew.
+  unsigned long GatheredVersion = 0;
+  // This piece's share of the edit and what it was shared for (WritePieces's header); rank 0:
+  // the rows each piece's share needs.
+  vtkLaplacianPieceEdit Piece;
+  double SharedFor[4] = { -1.0, -1.0, -1.0, -1.0 };
+  std::vector<std::vector<int>> PieceRows;
 };
 vtkCxxSetObjectMacro(vtkPLaplacianDeformationFilter, Controller, vtkMultiProcessController);
 
 namespace
 {
-const int PointsTag = 40501;
+const int ShareTag = 40501;
+const int PositionsTag = 40502;
 // The point array that carries each piece's selection labels to the first rank.
 const char* const GatheredLabels = "vtkLaplacianSelectionLabels";
 }
@@ -78,13 +86,21 @@ int vtkPLaplacianDeformationFilter::RequestData(
     this->GetNumberOfInputConnections(1) > 0 ? vtkSelection::GetData(inputVector[1]) : nullptr;
   vtkDataArray* labels = this->LocalLabels(input, selection);
   this->UpdateGlobalReach(input, labels, selection != nullptr);
-  vtkNew<vtkPolyData> edited;
   if (this->GatherPieces(input, selection))
   {
-    this->EditSurface(this->Internals->Gathered, edited);
+    vtkNew<vtkPolyData> unused; // the pieces are written from the edit's state
+    this->EditSurface(this->Internals->Gathered, unused);
   }
-  this->ScatterPoints(input, edited, output);
+  this->WritePieces(input, output);
   return 1;
+}
+
+void vtkPLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
+{
+  if (!this->Controller || this->Controller->GetNumberOfProcesses() < 2)
+  {
+    this->Superclass::WriteOutput(rest, output);
+  }
 }
 
 vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vtkSelection* selection)
@@ -259,6 +275,7 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelecti
     append->Update();
     internals.Gathered = vtkSmartPointer<vtkPolyData>::New();
     internals.Gathered->ShallowCopy(append->GetOutput());
+    ++internals.GatheredVersion;
     this->NumberOfGatheredPoints = internals.Gathered->GetNumberOfPoints();
     internals.PieceTimes = times;
     internals.GatheredReach = reach;
@@ -279,120 +296,107 @@ vtkSmartPointer<vtkIntArray> vtkPLaplacianDeformationFilter::SelectionLabels(
   return this->Superclass::SelectionLabels(input, selection);
 }
 
-void vtkPLaplacianDeformationFilter::ScatterPoints(
-  vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output)
+void vtkPLaplacianDeformationFilter::WritePieces(vtkPolyData* input, vtkPolyData* output)
 {
+  // Each rank writes its own piece from its share of the edit, which travels once per region.
+  // A move then sends the handle maps' entries where the edit is affine in them (every rank
+  // places its own rows), and otherwise each rank the positions of its rows alone.
   vtkInternals& internals = *this->Internals;
-  // Each rank gets back only its part in reach: per point its id in the piece, coordinates,
-  // EditRole and, where the edited surface has them, the refreshed normal; per polygon its id
-  // and refreshed normal. Everything else is the piece as it came in.
   vtkMultiProcessController* controller = this->Controller;
   const bool first = controller->GetLocalProcessId() == 0;
-  double normals[2] = { 0.0, 0.0 };
-  if (first)
+  vtkLaplacianEditState edit;
+  Eigen::VectorXd parameters;
+  // Whether there is an edit, whether it is affine, what it was shared for, and the number of
+  // the maps' entries.
+  double header[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
+  if (first && this->GetEditState(edit))
   {
-    normals[0] = edited->GetPointData()->GetNormals() ? 1.0 : 0.0;
-    normals[1] = edited->GetCellData()->GetNormals() ? 1.0 : 0.0;
+    header[0] = 1.0;
+    header[1] = vtkLaplacianPieceEdit::GetAffineParameters(edit, parameters) ? 1.0 : 0.0;
+    header[2] = static_cast<double>(edit.ModelVersion);
+    header[3] = static_cast<double>(internals.GatheredVersion);
+    header[4] = static_cast<double>(parameters.size());
   }
-  controller->Broadcast(normals, 2, 0);
-  const int pointWidth = normals[0] != 0.0 ? 8 : 5;
-  const int cellWidth = normals[1] != 0.0 ? 4 : 0;
-  std::vector<double> slice;
-  vtkIdType sizes[2] = { 0, 0 }; // points and polygons of this rank's part
-  if (first)
+  controller->Broadcast(header, 5, 0);
+  if (!std::equal(header, header + 4, internals.SharedFor))
   {
-    vtkDataArray* roles = edited->GetPointData()->GetArray("EditRole");
-    vtkDataArray* pointIds = internals.Gathered->GetPointData()->GetArray("vtkOriginalPointIds");
-    vtkDataArray* cellIds = internals.Gathered->GetCellData()->GetArray("vtkOriginalCellIds");
-    vtkIdType offset = 0, cellOffset = 0;
-    for (int r = 0; r < controller->GetNumberOfProcesses(); ++r)
+    this->SharePieces(edit, header[0] != 0.0, header[1] != 0.0);
+    std::copy(header, header + 4, internals.SharedFor);
+  }
+  le::Positions positions;
+  if (header[0] != 0.0 && header[1] != 0.0)
+  {
+    parameters.resize(static_cast<Eigen::Index>(header[4]));
+    controller->Broadcast(parameters.data(), parameters.size(), 0);
+    positions = internals.Piece.Evaluate(parameters);
+  }
+  else if (header[0] != 0.0 && first)
+  {
+    for (int r = 1; r < controller->GetNumberOfProcesses(); ++r)
     {
-      const vtkIdType rankSizes[2] = { internals.PieceSizes[r], internals.PieceCellSizes[r] };
-      std::vector<double> values(pointWidth * rankSizes[0] + cellWidth * rankSizes[1]);
-      for (vtkIdType i = 0; i < rankSizes[0] && edited->GetPoints(); ++i)
-      {
-        double* v = values.data() + pointWidth * i;
-        v[0] = pointIds->GetComponent(offset + i, 0);
-        edited->GetPoint(offset + i, v + 1);
-        v[4] = roles ? roles->GetComponent(offset + i, 0) : 0.0;
-        if (pointWidth == 8)
-        {
-          edited->GetPointData()->GetNormals()->GetTuple(offset + i, v + 5);
-        }
-      }
-      for (vtkIdType c = 0; c < rankSizes[1] && cellWidth > 0; ++c)
-      {
-        double* v = values.data() + pointWidth * rankSizes[0] + cellWidth * c;
-        v[0] = cellIds->GetComponent(cellOffset + c, 0);
-        edited->GetCellData()->GetNormals()->GetTuple(cellOffset + c, v + 1);
-      }
-      offset += rankSizes[0];
-      cellOffset += rankSizes[1];
-      if (r == 0)
-      {
-        slice = std::move(values);
-        std::copy(rankSizes, rankSizes + 2, sizes);
-      }
-      else
-      {
-        controller->Send(rankSizes, 2, r, PointsTag);
-        controller->Send(values.data(), static_cast<vtkIdType>(values.size()), r, PointsTag);
-      }
+      const le::Positions rows = vtkLaplacianPieceEdit::GetRowPositions(edit, internals.PieceRows[r]);
+      controller->Send(rows.data(), rows.size(), r, PositionsTag);
     }
+    positions = vtkLaplacianPieceEdit::GetRowPositions(edit, internals.Piece.GetRows());
   }
-  else
+  else if (header[0] != 0.0)
   {
-    controller->Receive(sizes, 2, 0, PointsTag);
-    slice.resize(pointWidth * sizes[0] + cellWidth * sizes[1]);
-    controller->Receive(slice.data(), static_cast<vtkIdType>(slice.size()), 0, PointsTag);
+    positions.resize(static_cast<Eigen::Index>(internals.Piece.GetRows().size()), 3);
+    controller->Receive(positions.data(), positions.size(), 0, PositionsTag);
   }
-
-  output->ShallowCopy(input);
-  const vtkIdType count = input->GetNumberOfPoints();
-  vtkSmartPointer<vtkSignedCharArray> roles = vtkLaplacianSurfaceAdapter::NewRoles(count);
-  vtkSmartPointer<vtkDataArray> pointNormals = WritableNormals(output->GetPointData(), pointWidth == 8);
-  vtkSmartPointer<vtkDataArray> cellNormals = WritableNormals(output->GetCellData(), cellWidth > 0);
-  if (count > 0)
-  {
-    vtkNew<vtkPoints> points;
-    points->SetDataType(input->GetPoints()->GetDataType());
-    points->DeepCopy(input->GetPoints());
-    for (vtkIdType i = 0; i < sizes[0]; ++i)
-    {
-      const double* v = slice.data() + pointWidth * i;
-      const vtkIdType id = static_cast<vtkIdType>(v[0]);
-      points->SetPoint(id, v + 1);
-      roles->SetValue(id, static_cast<signed char>(v[4]));
-      if (pointNormals)
-      {
-        pointNormals->SetTuple(id, v + 5);
-      }
-    }
-    output->SetPoints(points);
-  }
-  for (vtkIdType c = 0; c < sizes[1] && cellNormals; ++c)
-  {
-    const double* v = slice.data() + pointWidth * sizes[0] + cellWidth * c;
-    cellNormals->SetTuple(static_cast<vtkIdType>(v[0]), v + 1);
-  }
-  this->AddEditRoles(output, roles);
+  this->AddEditRoles(output, internals.Piece.Write(input, positions, output));
 }
 
-vtkSmartPointer<vtkDataArray> vtkPLaplacianDeformationFilter::WritableNormals(
-  vtkDataSetAttributes* attributes, bool refreshed)
+void vtkPLaplacianDeformationFilter::SharePieces(
+  const vtkLaplacianEditState& edit, bool edited, bool affine)
 {
-  // The normals as the serial filter leaves them: the input's, refreshed near the edit; none
-  // where the edit could not refresh them.
-  vtkDataArray* original = attributes->GetNormals();
-  if (!original || !refreshed)
+  // The first rank cuts the edit of the gathered parts into one share per piece: the parts
+  // follow each other in rank order, and carry their ids in the pieces.
+  vtkInternals& internals = *this->Internals;
+  vtkMultiProcessController* controller = this->Controller;
+  const int ranks = controller->GetNumberOfProcesses();
+  if (controller->GetLocalProcessId() != 0)
   {
-    attributes->SetNormals(nullptr);
-    return nullptr;
+    vtkIdType size = 0;
+    controller->Receive(&size, 1, 0, ShareTag);
+    std::vector<double> message(size);
+    controller->Receive(message.data(), size, 0, ShareTag);
+    if (!internals.Piece.Unpack(message))
+    {
+      vtkErrorMacro(<< "The first rank sent this piece a malformed share of the edit.");
+      internals.Piece = vtkLaplacianPieceEdit();
+    }
+    return;
   }
-  auto copy = vtk::TakeSmartPointer(original->NewInstance());
-  copy->DeepCopy(original);
-  attributes->SetNormals(copy);
-  return copy;
+  vtkLaplacianPieceEdit::Range range;
+  if (edited)
+  {
+    range.PointIds = internals.Gathered->GetPointData()->GetArray("vtkOriginalPointIds");
+    range.CellIds = internals.Gathered->GetCellData()->GetArray("vtkOriginalCellIds");
+  }
+  internals.PieceRows.assign(ranks, {});
+  for (int r = 0; r < ranks; ++r)
+  {
+    range.NumberOfPoints = internals.PieceSizes[r];
+    range.NumberOfCells = internals.PieceCellSizes[r];
+    vtkLaplacianPieceEdit piece;
+    if (edited)
+    {
+      piece.Build(edit, range, affine);
+    }
+    internals.PieceRows[r] = piece.GetRows();
+    range.FirstPoint += range.NumberOfPoints;
+    range.FirstCell += range.NumberOfCells;
+    if (r == 0)
+    {
+      internals.Piece = std::move(piece);
+      continue;
+    }
+    const std::vector<double> message = piece.Pack();
+    const vtkIdType size = static_cast<vtkIdType>(message.size());
+    controller->Send(&size, 1, r, ShareTag);
+    controller->Send(message.data(), size, r, ShareTag);
+  }
 }
 
 void vtkPLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)

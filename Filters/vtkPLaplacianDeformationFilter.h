@@ -7,14 +7,19 @@
  * ball around the handle centre, or around the labelled points, from a few reductions and the
  * labelled points), widened by two of the longest edges so that the ring around the region
  * comes along whole; each rank sends only its polygons in that part, which the first rank edits
- * (piece-boundary points that coincide, up to rounding, merge into one vertex), and each rank gets back only its
- * points there. The first rank's memory and the traffic of a move follow the part, not the
- * surface. The first rank caches the gathered part on the pieces' content, the selection and
- * the reach, so a handle move sends no geometry up. Point and polygon normals come back
- * refreshed near the edit, as the serial filter leaves them. A
- * selection on port 1 is labelled on each rank, on its own piece (ParaView's selections of ids
- * address pieces), and the labels travel with the pieces. With one process, or no controller,
- * it is the serial filter.
+ * (piece-boundary points that coincide, up to rounding, merge into one vertex). The first rank
+ * caches the gathered part on the pieces' content, the selection and the reach, so a handle
+ * move sends no geometry up.
+ *
+ * Once per region, each rank gets its share of the edit (vtkLaplacianPieceEdit): which of its
+ * points move and from which rows, and what refreshes its normals near the edit, across piece
+ * seams, as the serial filter does. Where the edit is affine in the handle maps (RotationMode
+ * None, or Implicit without PreserveDetailScale), a move broadcasts the maps' entries and every
+ * rank places its own points; otherwise each rank gets the positions of its rows alone. The
+ * first rank's memory and the traffic follow the region, not the surface. A selection on port 1
+ * is labelled on each rank, on its own piece (ParaView's selections of ids address pieces), and
+ * the labels travel with the pieces. With one process, or no controller, it is the serial
+ * filter.
  *
  * @sa vtkLaplacianDeformationFilter vtkMultiProcessController
  */
@@ -28,8 +33,8 @@
 #include <memory> // for std::unique_ptr
 
 class vtkDataArray;
-class vtkDataSetAttributes;
 class vtkIntArray;
+struct vtkLaplacianEditState;
 class vtkMultiProcessController;
 class vtkSelection;
 
@@ -60,6 +65,8 @@ protected:
   ~vtkPLaplacianDeformationFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // With several ranks, nothing: each writes its own piece (WritePieces).
+  void WriteOutput(vtkPolyData* rest, vtkPolyData* output) override;
   // On the gathered surface, the labels each rank made on its piece.
   vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection) override;
 
@@ -79,8 +86,10 @@ private:
   double LongestPolygonEdge(vtkPolyData* input);
   // Rank 0: the parts in reach of all pieces, appended; true on rank 0.
   bool GatherPieces(vtkPolyData* input, vtkSelection* selection);
-  void ScatterPoints(vtkPolyData* input, vtkPolyData* edited, vtkPolyData* output);
-  static vtkSmartPointer<vtkDataArray> WritableNormals(vtkDataSetAttributes* attributes, bool refreshed);
+  // Every rank's output, from its share of the edit (collective).
+  void WritePieces(vtkPolyData* input, vtkPolyData* output);
+  // Rank 0 sends each rank its share of `edit` (an empty one without an edit).
+  void SharePieces(const vtkLaplacianEditState& edit, bool edited, bool affine);
 
   // The reach, the piece's caches and, on rank 0, the gathered parts.
   struct vtkInternals;

@@ -26,7 +26,7 @@ runs = {
     "mpi3": ["mpiexec", "-np", "3", "--oversubscribe", "pvbatch", "--force-offscreen-rendering",
              script, plugin],
 }
-modes = ("none", "explicit", "implicit", "arap")  # TestParallel.py's file suffixes
+modes = ("none", "explicit", "implicit", "implicit-linear", "arap")  # TestParallel.py's file suffixes
 port = 11111 + os.getpid() % 1000
 runs["pvserver"] = ["pvpython", script, plugin]
 server = subprocess.Popen(

@@ -1,6 +1,6 @@
 """Memory of an edit under MPI, per rank, against the size of the surface.
 
-    mpiexec -np 2 pvbatch --symmetric ParallelRegionMemory.py PLUGIN [THETA PHI [ROI [MOVES]]]
+    mpiexec -np 2 pvbatch --symmetric ParallelRegionMemory.py PLUGIN [THETA PHI [ROI [MOVES [MODE]]]]
 
 Each rank generates its piece of a sphere (default 2000 x 1002: 2M points, 4M triangles), the
 filter edits a region of 4,337 vertices around (0.5, 0, 0), on the seam of the pieces, and every
@@ -8,7 +8,9 @@ rank prints its growth and the time at setup and after MOVES (10) handle moves, 
 and how many of its points moved (ROI: the ROI radius as a fraction of the diagonal, 0.034 by
 default); the first rank, which solves, also the points it gathered. It fails (exit 1) if that
 rank gathered more than four times the region, or more than 5% of the surface. MOVES -1 only
-generates the pieces: the baseline of ParallelTraffic.py's byte counts.
+generates the pieces: the baseline of ParallelTraffic.py's byte counts. MODE is the rotation
+mode: none (the default), explicit, implicit, implicit-linear (without the rigid correction) or
+arap.
 """
 import sys
 import time
@@ -30,6 +32,9 @@ def rss_mb(field="VmRSS:"):
 theta, phi = (int(a) for a in sys.argv[2:4]) if len(sys.argv) > 3 else (2000, 1002)
 roi = float(sys.argv[4]) if len(sys.argv) > 4 else 0.034
 move_count = int(sys.argv[5]) if len(sys.argv) > 5 else 10
+mode = sys.argv[6] if len(sys.argv) > 6 else "none"
+rotation_modes = {"none": ("None", 1), "explicit": ("Explicit", 1), "implicit": ("Implicit", 1),
+                  "implicit-linear": ("Implicit", 0), "arap": ("As rigid as possible", 1)}
 sphere = Sphere(ThetaResolution=theta, PhiResolution=phi, Radius=0.5)
 sphere.UpdatePipeline()
 
@@ -39,6 +44,7 @@ def edit():
     base = rss_mb()
     deform = simple.LaplacianDeformation(Input=sphere)
     deform.HandleCenter = [0.5, 0.0, 0.0]
+    deform.RotationMode, deform.PreserveDetailScale = rotation_modes[mode]
     diagonal = 3 ** 0.5  # as RegionMemory.py's radii, fractions of the diagonal
     deform.HandleRadius = 0.01 * diagonal
     deform.ROIRadius = roi * diagonal

@@ -11,7 +11,9 @@ are the second run's less the first's; a move's are the third run's less the sec
 ten. Prints the first rank's lines and one JSON line per rank count.
 
 With LAPLACIAN_TRAFFIC_LIMIT=F set, it fails if the setup or a move moves more than F of the
-surface's size, taken as 100 bytes a point (coordinates, normals and two triangles)."""
+surface's size, taken as 100 bytes a point (coordinates, normals and two triangles); with
+LAPLACIAN_MOVE_LIMIT=B, if a move sends more than B bytes. LAPLACIAN_EDIT_MODE picks the
+rotation mode (ParallelRegionMemory.py's MODE; none by default)."""
 import glob
 import json
 import os
@@ -36,7 +38,7 @@ def run(ranks, moves):
                    "--mca", "pml_monitoring_enable_output", "3",
                    "--mca", "pml_monitoring_filename", prefix,
                    "pvbatch", "--symmetric", os.path.join(here, "ParallelRegionMemory.py"),
-                   plugin, theta, phi, roi, str(moves)]
+                   plugin, theta, phi, roi, str(moves), mode]
         subprocess.run(command, env=environment, capture_output=True, check=True)
         with open(glob.glob(os.path.join(folder, "*", "rank.0", "stdout"))[0]) as lines:
             first = next((line for line in lines if line.startswith("rank 0:")), "")
@@ -50,7 +52,9 @@ def run(ranks, moves):
     return sent, first
 
 
+mode = os.environ.get("LAPLACIAN_EDIT_MODE", "none")
 limit = float(os.environ.get("LAPLACIAN_TRAFFIC_LIMIT", "inf"))
+move_limit = float(os.environ.get("LAPLACIAN_MOVE_LIMIT", "inf"))
 failed = False
 for ranks in rank_counts:
     base, _ = run(ranks, -1)
@@ -62,7 +66,11 @@ for ranks in rank_counts:
     if max(setup - base, (moved - setup) / 10.0) > limit * 100 * points:
         print(f"FAILED: {ranks} ranks moved more than {limit} of the surface", flush=True)
         failed = True
-    print(json.dumps({"ranks": ranks, "points": points,
+    if (moved - setup) / 10.0 > move_limit:
+        print(f"FAILED: a move on {ranks} ranks sent {(moved - setup) / 10.0:.0f} bytes, more "
+              f"than {move_limit:.0f}", flush=True)
+        failed = True
+    print(json.dumps({"ranks": ranks, "mode": mode, "points": points,
                       "roi_vertices": int(re.search(r"'NumberOfROIVertices': (\d+)", line).group(1)),
                       "setup_bytes": setup - base, "bytes_per_move": (moved - setup) / 10.0,
                       "first_rank_peak_mb": float(numbers["peak"]),

@@ -68,12 +68,14 @@ def check_and_write(edited, path):
 
 
 # Every rotation mode, each with two handle moves: the second must reuse the gathered part and
-# the factor.
+# the factor. The None mode and the implicit one without the rigid correction are affine in the
+# handle maps: their moves send the maps alone, and each rank places its own points.
 base, extension = os.path.splitext(sys.argv[2])
-modes = {"None": "none", "Explicit": "explicit", "Implicit": "implicit",
-         "As rigid as possible": "arap"}
-for mode, short in modes.items():
+modes = {"none": ("None", 1), "explicit": ("Explicit", 1), "implicit": ("Implicit", 1),
+         "implicit-linear": ("Implicit", 0), "arap": ("As rigid as possible", 1)}
+for short, (mode, preserve_scale) in modes.items():
     deform.RotationMode = mode
+    deform.PreserveDetailScale = preserve_scale
     deform.HandleTranslation = [0.1 * size, 0.05 * size, 0.0]
     deform.UpdatePipeline()
     deform.UpdatePropertyInformation()

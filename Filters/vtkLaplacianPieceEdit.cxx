@@ -1,0 +1,233 @@
+#include "vtkLaplacianPieceEdit.h"
+
+#include "LaplacianEditor.h"
+#include "vtkLaplacianSurfaceAdapter.h"
+
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <unordered_map>
+
+namespace le = LaplacianEditing;
+
+namespace
+{
+// A message is a sequence of arrays, each its length and then its values.
+template <typename T>
+void PackArray(std::vector<double>& message, const std::vector<T>& values)
+{
+  message.push_back(static_cast<double>(values.size()));
+  message.insert(message.end(), values.begin(), values.end());
+}
+
+struct MessageReader
+{
+  const double* Next;
+  const double* End;
+  bool Ok = true;
+
+  template <typename T>
+  void operator()(std::vector<T>& values)
+  {
+    const double size = this->Ok && this->Next < this->End ? *this->Next++ : -1.0;
+    this->Ok = size >= 0.0 && size <= static_cast<double>(this->End - this->Next);
+    values.clear();
+    if (this->Ok)
+    {
+      values.assign(this->Next, this->Next + static_cast<std::size_t>(size));
+      this->Next += static_cast<std::size_t>(size);
+    }
+  }
+};
+
+std::vector<double> Flatten(const Eigen::MatrixXd& matrix)
+{
+  std::vector<double> values = { static_cast<double>(matrix.cols()) };
+  values.insert(values.end(), matrix.data(), matrix.data() + matrix.size());
+  return values;
+}
+
+bool Unflatten(const std::vector<double>& values, Eigen::MatrixXd& matrix)
+{
+  const Eigen::Index cols = values.empty() ? 0 : static_cast<Eigen::Index>(values[0]);
+  const Eigen::Index size = static_cast<Eigen::Index>(values.size()) - 1;
+  if (cols < 0 || (cols == 0 && size > 0) || (cols > 0 && size % cols != 0))
+  {
+    return false;
+  }
+  matrix = cols > 0 ? Eigen::Map<const Eigen::MatrixXd>(values.data() + 1, size / cols, cols)
+                    : Eigen::MatrixXd();
+  return true;
+}
+}
+
+void vtkLaplacianPieceEdit::Build(const vtkLaplacianEditState& edit, const Range& piece, bool affine)
+{
+  const vtkLaplacianSurfaceAdapter& surface = *edit.Surface;
+  const le::EditRegion& region = edit.Editor->GetRegion();
+  auto inPiece = [](vtkDataArray* ids, vtkIdType first, vtkIdType count) {
+    return [=](vtkIdType id) {
+      return id >= first && id < first + count ? static_cast<vtkIdType>(ids->GetComponent(id, 0)) : -1;
+    };
+  };
+  const auto pointId = inPiece(piece.PointIds, piece.FirstPoint, piece.NumberOfPoints);
+  std::vector<int> vertices;
+  this->Normals = edit.Normals->Restrict(
+    pointId, inPiece(piece.CellIds, piece.FirstCell, piece.NumberOfCells), vertices);
+  std::unordered_map<int, int> indexOfVertex;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    indexOfVertex.emplace(vertices[i], static_cast<int>(i));
+  }
+  // The moved points' vertices are in the index already, unless a point has no triangle.
+  this->MovedPoints.clear();
+  this->MovedSlots.clear();
+  this->MovedRoles.clear();
+  std::vector<int> movedVertices;
+  for (const auto& point : surface.GetRegionPoints())
+  {
+    const vtkIdType id = pointId(point.first);
+    if (id >= 0)
+    {
+      const int v = region.Vertices[point.second];
+      if (indexOfVertex.emplace(v, static_cast<int>(vertices.size())).second)
+      {
+        vertices.push_back(v);
+      }
+      this->MovedPoints.push_back(id);
+      movedVertices.push_back(indexOfVertex[v]);
+      this->MovedRoles.push_back(static_cast<int>(region.Roles[point.second]));
+    }
+  }
+  const le::SurfaceMesh& mesh = *surface.GetMesh();
+  const std::vector<int>& rowOfVertex = surface.GetRowOfVertex();
+  this->Rows.clear();
+  this->Rest.clear();
+  this->SlotOfVertex.clear();
+  for (const int v : vertices)
+  {
+    this->Rest.push_back(mesh.GetPositions()[v]);
+    this->SlotOfVertex.push_back(rowOfVertex[v] >= 0 ? static_cast<int>(this->Rows.size()) : -1);
+    if (rowOfVertex[v] >= 0)
+    {
+      this->Rows.push_back(rowOfVertex[v]);
+    }
+  }
+  for (const int index : movedVertices)
+  {
+    this->MovedSlots.push_back(this->SlotOfVertex[index]);
+  }
+  this->Center = surface.GetCenter();
+  this->Scale = surface.GetScale();
+  this->Affine = affine ? edit.Editor->GetAffineRows(this->Rows) : le::AffineRows();
+}
+
+bool vtkLaplacianPieceEdit::GetAffineParameters(
+  const vtkLaplacianEditState& edit, Eigen::VectorXd& parameters)
+{
+  if (!edit.Editor->IsAffineInHandleMaps())
+  {
+    return false;
+  }
+  parameters = le::HandleMapParameters(*edit.Maps, edit.Editor->GetRegion().NumberOfHandleGroups);
+  return true;
+}
+
+le::Positions vtkLaplacianPieceEdit::GetRowPositions(
+  const vtkLaplacianEditState& edit, const std::vector<int>& rows)
+{
+  le::Positions positions(static_cast<Eigen::Index>(rows.size()), 3);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+  {
+    positions.row(i) = edit.Solution->row(rows[i]);
+  }
+  return positions;
+}
+
+std::vector<double> vtkLaplacianPieceEdit::Pack() const
+{
+  std::vector<double> message = { this->Center[0], this->Center[1], this->Center[2], this->Scale };
+  std::vector<double> rest;
+  for (const le::Vector3& p : this->Rest)
+  {
+    rest.insert(rest.end(), p.data(), p.data() + 3);
+  }
+  PackArray(message, rest);
+  PackArray(message, this->Rows);
+  PackArray(message, this->SlotOfVertex);
+  PackArray(message, this->MovedPoints);
+  PackArray(message, this->MovedSlots);
+  PackArray(message, this->MovedRoles);
+  this->Normals.VisitArrays([&](const auto& values) { PackArray(message, values); });
+  PackArray(message, Flatten(this->Affine.Offsets));
+  PackArray(message, Flatten(this->Affine.Responses));
+  message.push_back(this->Affine.Coupled ? 1.0 : 0.0);
+  return message;
+}
+
+bool vtkLaplacianPieceEdit::Unpack(const std::vector<double>& message)
+{
+  if (message.size() < 4)
+  {
+    return false;
+  }
+  this->Center = le::Vector3(message[0], message[1], message[2]);
+  this->Scale = message[3];
+  MessageReader read{ message.data() + 4, message.data() + message.size() };
+  std::vector<double> rest, offsets, responses;
+  read(rest);
+  read(this->Rows);
+  read(this->SlotOfVertex);
+  read(this->MovedPoints);
+  read(this->MovedSlots);
+  read(this->MovedRoles);
+  this->Normals.VisitArrays(read);
+  read(offsets);
+  read(responses);
+  this->Affine.Coupled = read.Next < read.End && *read.Next++ != 0.0;
+  Eigen::MatrixXd matrix;
+  if (!read.Ok || read.Next != read.End || rest.size() != 3 * this->SlotOfVertex.size() ||
+    !Unflatten(offsets, matrix) || (matrix.size() > 0 && matrix.cols() != 3))
+  {
+    return false;
+  }
+  this->Affine.Offsets = matrix;
+  this->Rest.resize(this->SlotOfVertex.size());
+  for (std::size_t i = 0; i < this->Rest.size(); ++i)
+  {
+    this->Rest[i] = le::Vector3(rest[3 * i], rest[3 * i + 1], rest[3 * i + 2]);
+  }
+  return Unflatten(responses, this->Affine.Responses) &&
+    this->Affine.Responses.rows() == (this->Affine.Coupled ? 3 : 1) * this->Affine.Offsets.rows();
+}
+
+vtkSmartPointer<vtkSignedCharArray> vtkLaplacianPieceEdit::Write(
+  vtkPolyData* input, const le::Positions& positions, vtkPolyData* output) const
+{
+  output->ShallowCopy(input);
+  const vtkIdType count = input->GetNumberOfPoints();
+  vtkSmartPointer<vtkSignedCharArray> roles = vtkLaplacianSurfaceAdapter::NewRoles(count);
+  // A piece whose index holds no region vertex keeps its points and normals.
+  if (this->Rows.empty() || positions.rows() != static_cast<Eigen::Index>(this->Rows.size()))
+  {
+    return roles;
+  }
+  if (!this->MovedPoints.empty())
+  {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(input->GetPoints()->GetDataType());
+    points->DeepCopy(input->GetPoints());
+    for (std::size_t i = 0; i < this->MovedPoints.size(); ++i)
+    {
+      const le::Vector3 p = positions.row(this->MovedSlots[i]).transpose() / this->Scale + this->Center;
+      points->SetPoint(this->MovedPoints[i], p.data());
+      roles->SetValue(this->MovedPoints[i], static_cast<signed char>(this->MovedRoles[i]));
+    }
+    output->SetPoints(points);
+  }
+  this->Normals.Refresh(output, this->Rest, this->SlotOfVertex, positions);
+  return roles;
+}
