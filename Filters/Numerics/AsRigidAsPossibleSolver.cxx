@@ -208,7 +208,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   });
   return free == 0 ? std::string()
                    : this->Factor.Factorize(laplacianMatrix, options.Backend, options.Ordering,
-                       options.MaximumFactorBytes);
+                       options.MaximumFactorBytes, 1, options.Distributed);
 }
 
 void AsRigidAsPossibleSolver::Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const

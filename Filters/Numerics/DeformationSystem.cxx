@@ -76,7 +76,7 @@ std::string DeformationSystem::Build(
   this->RegionOperatorTransposed = this->RegionOperator.transpose();
   this->RestRightHandSide = this->RegionOperatorTransposed * (this->RestDelta - this->FixedPart);
   const std::string error = this->Factor.Factorize(
-    normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes);
+    normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes, 1, options.Distributed);
   if (!error.empty())
   {
     return error;

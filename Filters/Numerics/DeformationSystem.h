@@ -44,6 +44,9 @@ struct DeformationOptions
   /// Largest factor to attempt, in bytes (0: no limit; CHOLMOD only). A new limit is tried
   /// anew, so it takes part in equality.
   double MaximumFactorBytes = 0.0;
+  /// Processes to factor across (SolverBackend::Distributed, or a factor above the limit);
+  /// none by default. Not owned.
+  DistributedSolver* Distributed = nullptr;
 
   bool operator==(const DeformationOptions& other) const
   {
@@ -51,6 +54,7 @@ struct DeformationOptions
       this->HandleWeight == other.HandleWeight && this->AnchorWeight == other.AnchorWeight &&
       this->Backend == other.Backend && this->Ordering == other.Ordering &&
       this->MaximumFactorBytes == other.MaximumFactorBytes &&
+      this->Distributed == other.Distributed &&
       this->LeastSquares == other.LeastSquares;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }

@@ -351,7 +351,7 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   this->KnownRightHandSide = normal.GetRightHandSide();
   rings = RingFits(); // not needed by the factorization: its peak is lower without them
   const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
-    options.MaximumFactorBytes, /*blockSize=*/3);
+    options.MaximumFactorBytes, /*blockSize=*/3, options.Distributed);
   if (!error.empty())
   {
     return error;

@@ -44,6 +44,14 @@ double LaplacianEditor::GetFactorBytes() const
     (this->Arap ? this->Arap->GetFactor().GetFactorBytes() : 0.0);
 }
 
+bool LaplacianEditor::IsFactorDistributed() const
+{
+  return this->Ready &&
+    (this->System.GetFactor().IsDistributed() ||
+      (this->Implicit && this->Implicit->GetFactor().IsDistributed()) ||
+      (this->Arap && this->Arap->GetFactor().IsDistributed()));
+}
+
 void LaplacianEditor::Record(const SparseCholesky& factor)
 {
   ++this->NumberOfFactorizations;

@@ -139,6 +139,8 @@ public:
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
   /// Bytes of the factors held (as predicted by CHOLMOD's analysis; 0 if unknown).
   double GetFactorBytes() const;
+  /// Whether a factor held is spread across processes (DistributedSolver).
+  bool IsFactorDistributed() const;
 
   /// How per-move loops over the ROI run (serial by default).
   void SetParallelFor(ParallelFor loop) { this->Loop = std::move(loop); }

@@ -40,8 +40,7 @@ SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 bool SparseCholesky::IsAvailable(SolverBackend backend)
 {
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
-  (void)backend;
-  return true;
+  return backend != SolverBackend::Distributed;
 #else
   return backend == SolverBackend::SimplicialLDLT;
 #endif
@@ -63,6 +62,7 @@ struct FactorReport
   double FactorizationSeconds = 0.0;
   double FactorBytes = 0.0;
   double ParallelShare = 0.0;
+  bool TooLarge = false; // the error is the memory limit's
 };
 
 const char* const NotPositiveDefinite = "the normal equations are not positive definite: some part "
@@ -90,6 +90,7 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(const SparseMatrix& m
   report.ParallelShare = backend->Factor.GetParallelShare();
   if (report.Error.empty() && maximumBytes > 0.0 && report.FactorBytes > maximumBytes)
   {
+    report.TooLarge = true;
     report.Error = "the factor would need " + std::to_string(report.FactorBytes / 1048576.0) +
       " MB, more than the " + std::to_string(maximumBytes / 1048576.0) +
       " MB allowed; choose a smaller region of interest or raise the limit";
@@ -127,10 +128,35 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithEigen(
   }
   return backend;
 }
+
+struct DistributedBackend : SparseCholesky::Backend
+{
+  std::unique_ptr<DistributedFactor> Factor;
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor&) const override
+  {
+    return this->Factor->Solve(rhs);
+  }
+};
+
+std::unique_ptr<SparseCholesky::Backend> FactorAcrossProcesses(
+  const SparseMatrix& matrix, DistributedSolver& solver, FactorReport& report)
+{
+  auto backend = std::make_unique<DistributedBackend>();
+  const Clock::time_point start = Clock::now();
+  report.Error.clear();
+  backend->Factor = solver.Factorize(matrix, report.Error);
+  report.FactorizationSeconds = SecondsSince(start);
+  if (!backend->Factor)
+  {
+    return nullptr;
+  }
+  report.FactorBytes = backend->Factor->GetBytes();
+  return backend;
+}
 }
 
 std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend backend,
-  FillOrdering ordering, double maximumBytes, int blockSize)
+  FillOrdering ordering, double maximumBytes, int blockSize, DistributedSolver* distributed)
 {
   // AMD orders fast; on large systems METIS's slower analysis pays back in factorization time
   // and memory. CHOLMOD's own default tries METIS far earlier, which costs more than it saves
@@ -142,7 +168,11 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
     ordering = matrix.rows() < 300000 && blockSize == 1 ? FillOrdering::AMD : FillOrdering::METIS;
   }
   this->Impl.reset();
-  if (!IsAvailable(backend))
+  if (backend == SolverBackend::Distributed && !distributed)
+  {
+    return "the distributed solver runs only across MPI processes";
+  }
+  if (backend != SolverBackend::Distributed && !IsAvailable(backend))
   {
     return "this build has no CHOLMOD; use the SimplicialLDLT solver";
   }
@@ -152,10 +182,19 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
   {
     this->Impl = FactorWithCholmod(matrix, ordering, blockSize, maximumBytes, report);
   }
-  else
 #endif
+  if (backend == SolverBackend::SimplicialLDLT)
   {
     this->Impl = FactorWithEigen(matrix, report);
+  }
+  // Too large for this process: its share of a factor across all of them may fit.
+  this->Distributed = distributed &&
+    (backend == SolverBackend::Distributed || (report.TooLarge && distributed->GetNumberOfProcesses() > 1));
+  if (this->Distributed)
+  {
+    const double analysisSeconds = report.AnalysisSeconds;
+    this->Impl = FactorAcrossProcesses(matrix, *distributed, report);
+    report.AnalysisSeconds = analysisSeconds;
   }
   this->AnalysisSeconds = report.AnalysisSeconds;
   this->FactorizationSeconds = report.FactorizationSeconds;

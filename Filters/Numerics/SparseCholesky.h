@@ -1,10 +1,12 @@
 // Factor once, solve many times: the kernel of interactive editing (Section 8).
 //
 // Backends: CHOLMOD's supernodal Cholesky (CholmodFactor), which uses BLAS threads for the
-// dense supernodes, and Eigen's own SimplicialLDLT as the dependency-free fallback.
+// dense supernodes, Eigen's own SimplicialLDLT as the dependency-free fallback, and a factor
+// spread across processes (DistributedSolver) for regions too large for one.
 #ifndef LaplacianEditing_SparseCholesky_h
 #define LaplacianEditing_SparseCholesky_h
 
+#include "DistributedSolver.h"
 #include "ParallelFor.h"
 
 #include <Eigen/Core>
@@ -18,7 +20,8 @@ namespace LaplacianEditing
 enum class SolverBackend
 {
   Cholmod,
-  SimplicialLDLT
+  SimplicialLDLT,
+  Distributed // the DistributedSolver handed to Factorize
 };
 
 /// Fill-reducing orderings (CHOLMOD only; SimplicialLDLT always uses AMD).
@@ -38,7 +41,7 @@ public:
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
 
-  /// Whether the backend was compiled in.
+  /// Whether the backend was compiled in (the distributed one comes from the caller).
   static bool IsAvailable(SolverBackend backend);
 
   /// Factors a symmetric positive definite matrix (its upper triangle is read).
@@ -47,8 +50,11 @@ public:
   /// than `maximumBytes` (0: no limit) is refused with an error instead of being attempted.
   /// `blockSize` > 1 says the unknowns come in groups of that many with one pattern (x, y, z
   /// coupled); CHOLMOD then orders the much smaller graph of the groups.
+  /// With a `distributed` solver, a CHOLMOD factor predicted above `maximumBytes` is factored
+  /// across its processes instead of being refused; SolverBackend::Distributed always is.
   std::string Factorize(const Eigen::SparseMatrix<double>& matrix, SolverBackend backend,
-    FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0, int blockSize = 1);
+    FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0, int blockSize = 1,
+    DistributedSolver* distributed = nullptr);
 
   /// Solves for every column of `rhs` with the current factor. With CHOLMOD, solves for up to
   /// four columns run independent subtrees of the factor through `loop`.
@@ -59,8 +65,11 @@ public:
   /// Seconds spent in the symbolic analysis (ordering) and the numeric factorization.
   double GetAnalysisSeconds() const { return this->AnalysisSeconds; }
   double GetFactorizationSeconds() const { return this->FactorizationSeconds; }
-  /// Predicted (CHOLMOD) or actual bytes of the factor; 0 if unknown.
+  /// Predicted (CHOLMOD) or actual bytes of the factor; 0 if unknown. A distributed factor's
+  /// bytes are its processes' together.
   double GetFactorBytes() const { return this->FactorBytes; }
+  /// Whether the factor is spread across processes (DistributedSolver).
+  bool IsDistributed() const { return this->Distributed; }
   /// Share of a few-column solve's work that runs in independent subtrees, in parallel when
   /// the loop allows it (CHOLMOD; 0 otherwise).
   double GetParallelShare() const { return this->ParallelShare; }
@@ -74,6 +83,7 @@ private:
   double FactorizationSeconds = 0.0;
   double FactorBytes = 0.0;
   double ParallelShare = 0.0;
+  bool Distributed = false;
 };
 }
 

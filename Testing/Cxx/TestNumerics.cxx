@@ -3,6 +3,7 @@
 
 #include "CoincidentPoints.h"
 #include "DeformationSystem.h"
+#include "DistributedSolver.h"
 #include "EditRegion.h"
 #include "GeodesicDistance.h"
 #include "ImplicitSimilaritySystem.h"
@@ -10,6 +11,7 @@
 #include "SurfaceMesh.h"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -553,6 +555,67 @@ TEST(SparseCholesky, BlockOrderingsSolveTheCoupledSystem)
       }
     }
   }
+}
+
+namespace
+{
+// An in-process stand-in for the processes behind a DistributedSolver (the MPI one,
+// vtkLaplacianMumpsSolver, is tested under mpiexec in the ParaView stage): it records what it
+// was asked to factor, so the test can check when SparseCholesky hands a factor over.
+struct RecordingDistributedSolver : DistributedSolver
+{
+  struct Factor : DistributedFactor
+  {
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper> LDLT;
+    Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const override { return this->LDLT.solve(rhs); }
+    double GetBytes() const override { return 1.0; }
+    double GetLargestShareBytes() const override { return 0.5; }
+  };
+  int Processes = 2;
+  int Factorizations = 0;
+  std::unique_ptr<DistributedFactor> Factorize(
+    const Eigen::SparseMatrix<double>& matrix, std::string&) override
+  {
+    ++this->Factorizations;
+    auto factor = std::make_unique<Factor>();
+    factor->LDLT.compute(matrix);
+    return factor;
+  }
+  int GetNumberOfProcesses() const override { return this->Processes; }
+};
+}
+
+TEST(SparseCholesky, FactorsTooLargeForOneProcessGoAcrossProcesses)
+{
+  const SurfaceMesh grid = MakeGrid(30, 30, 1.0, Bumps);
+  std::vector<Eigen::Triplet<double>> triplets;
+  AddShiftedGraphLaplacian(grid, 0, triplets);
+  const int n = grid.GetNumberOfVertices();
+  Eigen::SparseMatrix<double> matrix(n, n);
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::MatrixXd rhs = Eigen::MatrixXd::Ones(n, 3);
+  RecordingDistributedSolver processes;
+  SparseCholesky factor;
+
+  ASSERT_EQ(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD, 0.0, 1, &processes), "");
+  EXPECT_FALSE(factor.IsDistributed()) << "a factor within the limit stays on this process";
+  EXPECT_EQ(processes.Factorizations, 0);
+
+  ASSERT_EQ(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD, 1.0, 1, &processes), "");
+  EXPECT_TRUE(factor.IsDistributed()) << "a factor above the limit goes across the processes";
+  EXPECT_EQ(factor.GetFactorBytes(), 1.0);
+  EXPECT_LT((matrix * factor.Solve(rhs) - rhs).norm() / rhs.norm(), 1e-12);
+
+  processes.Processes = 1;
+  EXPECT_NE(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD, 1.0, 1, &processes)
+              .find("more than the"),
+    std::string::npos)
+    << "one process has nowhere to spread the factor: the limit's error stands";
+  EXPECT_EQ(factor.Factorize(matrix, SolverBackend::Distributed, FillOrdering::AMD, 0.0, 1, &processes), "");
+  EXPECT_TRUE(factor.IsDistributed()) << "the Distributed backend always factors across";
+  EXPECT_EQ(processes.Factorizations, 2);
+  EXPECT_NE(factor.Factorize(matrix, SolverBackend::Distributed).find("MPI"), std::string::npos)
+    << "without processes, the Distributed backend says why it cannot run";
 }
 
 TEST(EditRegion, RejectsBadSelections)
