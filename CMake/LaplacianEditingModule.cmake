@@ -26,6 +26,24 @@ set(private_headers ${private_classes})
 list(TRANSFORM private_sources APPEND ".cxx")
 list(TRANSFORM private_headers APPEND ".h")
 
+# MUMPS factors a region across the MPI processes in the parallel filter, where VTK has MPI
+# (ParaView's VTK; Debian's libmumps-dev, which the ParaView stage installs).
+option(LAPLACIAN_EDITING_USE_MUMPS "Use MUMPS across MPI processes when it is found" ON)
+set(_le_mumps OFF)
+if (LAPLACIAN_EDITING_USE_MUMPS AND TARGET VTK::ParallelMPI)
+  find_path(MUMPS_INCLUDE_DIR dmumps_c.h)
+  find_library(DMUMPS_LIBRARY dmumps)
+  find_library(MUMPS_COMMON_LIBRARY mumps_common)
+  if (MUMPS_INCLUDE_DIR AND DMUMPS_LIBRARY AND MUMPS_COMMON_LIBRARY)
+    set(_le_mumps ON)
+    list(APPEND private_sources "${_le_root}/Filters/vtkLaplacianMumpsSolver.cxx")
+    list(APPEND private_headers "${_le_root}/Filters/vtkLaplacianMumpsSolver.h")
+    message(STATUS "MUMPS: ${DMUMPS_LIBRARY}")
+  else ()
+    message(STATUS "MUMPS not found: regions are factored on one MPI process")
+  endif ()
+endif ()
+
 # In the ParaView plugin the module is linked into the plugin library itself.
 set(force_static)
 if (LAPLACIAN_EDITING_PARAVIEW_PLUGIN)
@@ -38,6 +56,12 @@ vtk_module_add_module(LaplacianEditing::Deformation ${force_static}
 vtk_module_include(LaplacianEditing::Deformation
   PUBLIC "$<BUILD_INTERFACE:${_le_root}/Filters>" "$<BUILD_INTERFACE:${_le_root}/Widgets>")
 vtk_module_link(LaplacianEditing::Deformation PRIVATE LaplacianEditing::Numerics)
+if (_le_mumps)
+  vtk_module_link(LaplacianEditing::Deformation PRIVATE
+    VTK::ParallelMPI "${DMUMPS_LIBRARY}" "${MUMPS_COMMON_LIBRARY}")
+  vtk_module_include(LaplacianEditing::Deformation PRIVATE "${MUMPS_INCLUDE_DIR}")
+  vtk_module_definitions(LaplacianEditing::Deformation PRIVATE LAPLACIAN_EDITING_HAS_MUMPS)
+endif ()
 if (COMMAND paraview_add_server_manager_xmls)
   paraview_add_server_manager_xmls(XMLS "${_le_root}/ParaView/Plugin/LaplacianDeformation.xml")
 endif ()

@@ -60,7 +60,8 @@ static_assert(static_cast<int>(le::RotationMode::None) ==
 static_assert(static_cast<int>(le::SolverBackend::Cholmod) ==
     vtkLaplacianDeformationFilter::SOLVER_CHOLMOD &&
   static_cast<int>(le::SolverBackend::SimplicialLDLT) ==
-    vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT);
+    vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT &&
+  static_cast<int>(le::SolverBackend::Distributed) == vtkLaplacianDeformationFilter::SOLVER_MUMPS);
 static_assert(static_cast<int>(le::FillOrdering::Automatic) ==
     vtkLaplacianDeformationFilter::ORDERING_AUTOMATIC &&
   static_cast<int>(le::FillOrdering::AMD) == vtkLaplacianDeformationFilter::ORDERING_AMD &&
@@ -741,6 +742,13 @@ bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
   system.LeastSquares = this->RotationMode != ROTATION_AS_RIGID_AS_POSSIBLE;
   system.MaximumFactorBytes = 1048576.0 *
     (this->MaximumFactorMemory > 0.0 ? this->MaximumFactorMemory : internals.AvailableMemory);
+  system.Distributed = this->GetDistributedSolver();
+  if (this->Solver == SOLVER_MUMPS && !system.Distributed)
+  {
+    return this->Fail("The MUMPS solver factors across MPI processes: it needs "
+                      "vtkPLaplacianDeformationFilter in an MPI run, in a build with MUMPS. Use "
+                      "CHOLMOD or SimplicialLDLT here.");
+  }
 
   const Clock::time_point start = Clock::now();
   const le::EditStatus status = internals.Editor.UpdateRegion(
@@ -828,6 +836,7 @@ bool vtkLaplacianDeformationFilter::UpdateRotationModel()
     this->FactorizationTime = internals.Editor.GetFactorizationSeconds();
   }
   this->FactorMemory = internals.Editor.GetFactorBytes() / 1048576.0;
+  this->FactoredAcrossProcesses = internals.Editor.IsFactorDistributed();
   return true;
 }
 
@@ -1076,7 +1085,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
   os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";
-  os << indent << "Solver: " << name(this->Solver, { "CHOLMOD", "SimplicialLDLT" }) << "\n";
+  os << indent << "Solver: " << name(this->Solver, { "CHOLMOD", "SimplicialLDLT", "MUMPS" }) << "\n";
   os << indent << "Ordering: "
      << name(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
   os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB\n";
@@ -1103,6 +1112,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "ARAPEnergy: " << this->ARAPEnergy << "\n";
   os << next << "NumberOfSurfaceVertices: " << this->NumberOfSurfaceVertices << "\n";
   os << next << "FactorMemory: " << this->FactorMemory << " MB\n";
+  os << next << "FactoredAcrossProcesses: " << this->FactoredAcrossProcesses << "\n";
   os << next << "NumberOfFactorizations: " << this->NumberOfFactorizations << " (attempted "
      << this->NumberOfFactorizationAttempts << ")\n";
 }

@@ -57,6 +57,10 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
 struct vtkLaplacianEditState;
+namespace LaplacianEditing
+{
+class DistributedSolver;
+}
 class vtkIntArray;
 class vtkPoints;
 class vtkSelection;
@@ -88,7 +92,8 @@ public:
   enum Solvers
   {
     SOLVER_CHOLMOD = 0,
-    SOLVER_SIMPLICIAL_LDLT = 1
+    SOLVER_SIMPLICIAL_LDLT = 1,
+    SOLVER_MUMPS = 2
   };
   enum EditRoles
   {
@@ -371,15 +376,19 @@ public:
   void SetImplicitFormulationToPaper() { this->SetImplicitFormulation(IMPLICIT_PAPER); }
 
   /**
-   * Sparse Cholesky backend: CHOLMOD supernodal (default where built in) or Eigen's
-   * SimplicialLDLT.
+   * Sparse Cholesky backend: CHOLMOD supernodal (default where built in), Eigen's
+   * SimplicialLDLT, or MUMPS, which factors across the MPI processes (only
+   * vtkPLaplacianDeformationFilter under MPI, in a build with MUMPS). Under MPI, a CHOLMOD factor
+   * larger than MaximumFactorMemory is factored with MUMPS across the processes as well.
    */
-  vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_SIMPLICIAL_LDLT);
+  vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_MUMPS);
   vtkGetMacro(Solver, int);
   /** CHOLMOD's supernodal Cholesky (the default where built in). */
   void SetSolverToCholmod() { this->SetSolver(SOLVER_CHOLMOD); }
   /** Eigen's SimplicialLDLT. */
   void SetSolverToSimplicialLDLT() { this->SetSolver(SOLVER_SIMPLICIAL_LDLT); }
+  /** MUMPS across the MPI processes. */
+  void SetSolverToMUMPS() { this->SetSolver(SOLVER_MUMPS); }
   /** Whether this build has CHOLMOD. */
   static bool IsCholmodAvailable();
 
@@ -403,7 +412,8 @@ public:
    * Largest factor to attempt, in megabytes. CHOLMOD's analysis predicts the factor's size
    * before it is computed; a larger one is refused with an error, so that a huge region fails
    * clearly instead of exhausting memory. 0 (the default) means 80% of the physical memory
-   * available when the factorization starts. (SimplicialLDLT cannot predict its size.)
+   * available when the factorization starts. (SimplicialLDLT cannot predict its size.) Under
+   * MPI with MUMPS built in, such a factor is spread across the processes instead.
    */
   vtkSetClampMacro(MaximumFactorMemory, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumFactorMemory, double);
@@ -583,10 +593,15 @@ public:
   vtkGetMacro(NumberOfSurfaceVertices, int);
 
   /**
-   * Megabytes of the factors held for the current region (CHOLMOD's prediction; 0 if
-   * unknown).
+   * Megabytes of the factors held for the current region (CHOLMOD's prediction, or MUMPS's
+   * factor on all processes together; 0 if unknown).
    */
   vtkGetMacro(FactorMemory, double);
+
+  /**
+   * Whether the current region's factor is spread across MPI processes (MUMPS).
+   */
+  vtkGetMacro(FactoredAcrossProcesses, vtkTypeBool);
 
   vtkMTimeType GetMTime() override;
 
@@ -654,6 +669,11 @@ protected:
    */
   bool GetEditState(vtkLaplacianEditState& state) const;
 
+  /**
+   * The processes a factor may be spread across (the parallel filter's MUMPS); none here.
+   */
+  virtual LaplacianEditing::DistributedSolver* GetDistributedSolver() { return nullptr; }
+
   int SelectionMode = SELECTION_GEODESIC;
   int RadiusUnits = RADIUS_ABSOLUTE;
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
@@ -697,6 +717,7 @@ protected:
   double FactorizationTime = 0.0;
   double SolveTime = 0.0;
   double FactorMemory = 0.0;
+  vtkTypeBool FactoredAcrossProcesses = 0;
   int NumberOfSurfaceVertices = 0;
   int NumberOfARAPIterations = 0;
   double ARAPEnergy = 0.0;

@@ -10,6 +10,9 @@
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
 #include "vtkLaplacianPieceEdit.h"
+#ifdef LAPLACIAN_EDITING_HAS_MUMPS
+#include "vtkLaplacianMumpsSolver.h"
+#endif
 #include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
@@ -51,6 +54,11 @@ struct vtkPLaplacianDeformationFilter::vtkInternals
   vtkLaplacianPieceEdit Piece;
   double SharedFor[4] = { -1.0, -1.0, -1.0, -1.0 };
   std::vector<std::vector<int>> PieceRows;
+#ifdef LAPLACIAN_EDITING_HAS_MUMPS
+  // The processes' MUMPS, for the controller it was made for.
+  std::shared_ptr<vtkLaplacianMumpsSolver> Mumps;
+  vtkMultiProcessController* MumpsController = nullptr;
+#endif
 };
 vtkCxxSetObjectMacro(vtkPLaplacianDeformationFilter, Controller, vtkMultiProcessController);
 
@@ -76,6 +84,14 @@ vtkPLaplacianDeformationFilter::~vtkPLaplacianDeformationFilter()
 int vtkPLaplacianDeformationFilter::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+#ifdef LAPLACIAN_EDITING_HAS_MUMPS
+  vtkInternals& internals = *this->Internals;
+  if (internals.MumpsController != this->Controller)
+  {
+    internals.Mumps = vtkLaplacianMumpsSolver::New(this->Controller);
+    internals.MumpsController = this->Controller;
+  }
+#endif
   if (!this->Controller || this->Controller->GetNumberOfProcesses() < 2)
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);
@@ -91,8 +107,31 @@ int vtkPLaplacianDeformationFilter::RequestData(
     vtkNew<vtkPolyData> unused; // the pieces are written from the edit's state
     this->EditSurface(this->Internals->Gathered, unused);
   }
+#ifdef LAPLACIAN_EDITING_HAS_MUMPS
+  // The other processes factor and solve along with the first while it edits.
+  if (internals.Mumps)
+  {
+    if (this->Controller->GetLocalProcessId() == 0)
+    {
+      internals.Mumps->EndService();
+    }
+    else
+    {
+      internals.Mumps->Serve();
+    }
+  }
+#endif
   this->WritePieces(input, output);
   return 1;
+}
+
+LaplacianEditing::DistributedSolver* vtkPLaplacianDeformationFilter::GetDistributedSolver()
+{
+#ifdef LAPLACIAN_EDITING_HAS_MUMPS
+  return this->Internals->Mumps.get();
+#else
+  return nullptr;
+#endif
 }
 
 void vtkPLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)

@@ -21,6 +21,10 @@
  * the labels travel with the pieces. With one process, or no controller, it is the serial
  * filter.
  *
+ * The first rank factors the region alone with CHOLMOD unless the factor would exceed
+ * MaximumFactorMemory, or Solver is MUMPS: then, in a build with MUMPS, all ranks factor it
+ * together (vtkLaplacianMumpsSolver), and each update's solves run on all of them.
+ *
  * @sa vtkLaplacianDeformationFilter vtkMultiProcessController
  */
 #ifndef vtkPLaplacianDeformationFilter_h
@@ -67,6 +71,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   // With several ranks, nothing: each writes its own piece (WritePieces).
   void WriteOutput(vtkPolyData* rest, vtkPolyData* output) override;
+  // MUMPS across the controller's processes, in a build with MUMPS under MPI.
+  LaplacianEditing::DistributedSolver* GetDistributedSolver() override;
   // On the gathered surface, the labels each rank made on its piece.
   vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection) override;
 

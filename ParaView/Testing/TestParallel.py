@@ -2,6 +2,7 @@
 into pieces across the ranks and write every output point, its normal and its EditRole to a
 file. With LAPLACIAN_PARALLEL_SELECTION=1 the handle is a ParaView selection (a threshold on
 the x coordinate, the same points on every rank) instead of HandleCenter and HandleRadius.
+With LAPLACIAN_PARALLEL_SOLVER=MUMPS or =limit, runs with several ranks factor across them.
 MESH "sphere" edits ParaView's sphere source on its seam instead of a file.
 
     [mpiexec -np 2] pvbatch TestParallel.py PLUGIN POINTS.txt MESH
@@ -44,6 +45,13 @@ if os.environ.get("LAPLACIAN_PARALLEL_SELECTION") == "1":
         FieldType="POINT", ArrayName="X", Thresholds=[bounds[1] - 0.05 * size, bounds[1]])
 deform.ROIRadius = 0.45 * size
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+# LAPLACIAN_PARALLEL_SOLVER: with several ranks, "MUMPS" factors across them, and "limit" does
+# too because CHOLMOD's factor would exceed a 1 kB MaximumFactorMemory.
+across = ranks > 1 and os.environ.get("LAPLACIAN_PARALLEL_SOLVER", "")
+if across == "MUMPS":
+    deform.Solver = "MUMPS"
+elif across == "limit":
+    deform.MaximumFactorMemory = 0.001
 rest = servermanager.Fetch(mesh)
 
 
@@ -85,6 +93,8 @@ for short, (mode, preserve_scale) in modes.items():
     deform.UpdatePropertyInformation()
     if deform.GetProperty("NumberOfFactorizations").GetData() != factorizations:
         sys.exit(f"FAILED: {mode}: the second handle move refactored")
+    if bool(across) != bool(deform.GetProperty("FactoredAcrossProcesses").GetData()):
+        sys.exit(f"FAILED: {mode}: the factor is {'not ' if across else ''}across the ranks")
     edited = servermanager.Fetch(deform)  # all pieces, appended on the first rank
     check_and_write(edited, f"{base}-{short}{extension}")
     gathered = deform.GetProperty("NumberOfGatheredPoints").GetData()

@@ -268,6 +268,23 @@ TEST(Feedback, AFailedFactorizationIsNotRetriedWhileNothingItDependsOnChanges)
   EXPECT_EQ(filter->GetErrorCode(), vtkErrorCode::NoError);
 }
 
+TEST(Feedback, MUMPSOutsideMPISaysWhatItNeeds)
+{
+  // MUMPS factors across MPI processes: the serial filter has none to offer, and says so.
+  auto filter = QuickStart(Bunny());
+  filter->SetSolverToMUMPS();
+  ErrorCatcher errors(filter);
+  filter->Update();
+  EXPECT_NE(errors.Messages.find("vtkPLaplacianDeformationFilter in an MPI run"), std::string::npos)
+    << errors.Messages;
+  EXPECT_EQ(filter->GetErrorCode(), vtkErrorCode::UserError);
+  EXPECT_EQ(filter->GetNumberOfFactorizationAttempts(), 0);
+  EXPECT_FALSE(filter->GetFactoredAcrossProcesses());
+  filter->SetSolverToCholmod();
+  filter->Update();
+  EXPECT_EQ(filter->GetErrorCode(), vtkErrorCode::NoError);
+}
+
 TEST(Feedback, PrintSelfNamesEnumsAndReportsTheLastUpdate)
 {
   auto filter = QuickStart(Bunny());

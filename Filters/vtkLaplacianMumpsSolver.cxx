@@ -1,0 +1,262 @@
+#include "vtkLaplacianMumpsSolver.h"
+
+#include "vtkMPI.h"
+#include "vtkMPICommunicator.h"
+#include "vtkMultiProcessController.h"
+
+#include <dmumps_c.h>
+
+#include <cmath>
+#include <string>
+
+namespace le = LaplacianEditing;
+
+struct vtkLaplacianMumpsSolver::Instance
+{
+  DMUMPS_STRUC_C Mumps{};
+  // MUMPS's arrays are one-based (ICNTL(I) is icntl[I - 1]).
+  MUMPS_INT& Control(int i) { return this->Mumps.icntl[i - 1]; }
+  MUMPS_INT Info(int i) const { return this->Mumps.infog[i - 1]; }
+  // INFOG fields that count millions when negative.
+  double Count(int i) const
+  {
+    const MUMPS_INT value = this->Info(i);
+    return value < 0 ? -1e6 * value : static_cast<double>(value);
+  }
+};
+
+namespace
+{
+const int JobInitialize = -1;
+const int JobEnd = -2;
+const int JobSolve = 3;
+const int JobAnalyzeAndFactorize = 4;
+
+class MumpsFactor : public le::DistributedFactor
+{
+public:
+  MumpsFactor(std::shared_ptr<vtkLaplacianMumpsSolver> solver, int instance, double bytes,
+    double largestShareBytes)
+    : Solver(std::move(solver))
+    , Number(instance)
+    , Bytes(bytes)
+    , LargestShareBytes(largestShareBytes)
+  {
+  }
+  ~MumpsFactor() override { this->Solver->Release(this->Number); }
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const override
+  {
+    return this->Solver->Solve(this->Number, rhs);
+  }
+  double GetBytes() const override { return this->Bytes; }
+  double GetLargestShareBytes() const override { return this->LargestShareBytes; }
+
+private:
+  std::shared_ptr<vtkLaplacianMumpsSolver> Solver;
+  int Number;
+  double Bytes;
+  double LargestShareBytes;
+};
+
+bool MPIRunning()
+{
+  int initialized = 0, finalized = 0;
+  MPI_Initialized(&initialized);
+  MPI_Finalized(&finalized);
+  return initialized && !finalized;
+}
+}
+
+std::shared_ptr<vtkLaplacianMumpsSolver> vtkLaplacianMumpsSolver::New(
+  vtkMultiProcessController* controller)
+{
+  auto* communicator =
+    controller ? vtkMPICommunicator::SafeDownCast(controller->GetCommunicator()) : nullptr;
+  if (!communicator || !communicator->GetMPIComm() || !MPIRunning())
+  {
+    return nullptr;
+  }
+  std::shared_ptr<vtkLaplacianMumpsSolver> solver(new vtkLaplacianMumpsSolver(controller));
+  solver->FortranCommunicator =
+    static_cast<int>(MPI_Comm_c2f(*communicator->GetMPIComm()->GetHandle()));
+  return solver;
+}
+
+vtkLaplacianMumpsSolver::vtkLaplacianMumpsSolver(vtkMultiProcessController* controller)
+  : Controller(controller)
+{
+}
+
+vtkLaplacianMumpsSolver::~vtkLaplacianMumpsSolver()
+{
+  // After MPI_Finalize the process is ending and MUMPS can no longer be called.
+  if (MPIRunning())
+  {
+    while (!this->Instances.empty())
+    {
+      this->End(this->Instances.begin()->first);
+    }
+  }
+}
+
+int vtkLaplacianMumpsSolver::GetNumberOfProcesses() const
+{
+  return this->Controller->GetNumberOfProcesses();
+}
+
+void vtkLaplacianMumpsSolver::Run(Instance& instance, int job) const
+{
+  instance.Mumps.job = job;
+  dmumps_c(&instance.Mumps);
+}
+
+void vtkLaplacianMumpsSolver::End(int number)
+{
+  auto found = this->Instances.find(number);
+  if (found != this->Instances.end())
+  {
+    this->Run(*found->second, JobEnd);
+    this->Instances.erase(found);
+  }
+}
+
+void vtkLaplacianMumpsSolver::Send(Command command, int instance, int columns)
+{
+  for (const int released : this->Released)
+  {
+    int message[3] = { RELEASE, released, 0 };
+    this->Controller->Broadcast(message, 3, 0);
+    this->End(released);
+  }
+  this->Released.clear();
+  int message[3] = { command, instance, columns };
+  this->Controller->Broadcast(message, 3, 0);
+}
+
+int vtkLaplacianMumpsSolver::Factor(int number, const Eigen::SparseMatrix<double>* matrix)
+{
+  auto instance = std::make_unique<Instance>();
+  DMUMPS_STRUC_C& mumps = instance->Mumps;
+  mumps.comm_fortran = this->FortranCommunicator;
+  mumps.par = 1; // the first process works on the factor too
+  mumps.sym = 1; // symmetric positive definite
+  this->Run(*instance, JobInitialize);
+  // Quiet: errors come back through INFOG(1) and become the filter's messages.
+  instance->Control(1) = -1;
+  instance->Control(2) = -1;
+  instance->Control(3) = -1;
+  instance->Control(4) = 0;
+  std::vector<MUMPS_INT> rows, columns;
+  std::vector<double> values;
+  if (matrix)
+  {
+    // The upper triangle, as CHOLMOD reads it, in one-based coordinates.
+    for (Eigen::Index column = 0; column < matrix->outerSize(); ++column)
+    {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(*matrix, column); it; ++it)
+      {
+        if (it.row() <= column)
+        {
+          rows.push_back(static_cast<MUMPS_INT>(it.row() + 1));
+          columns.push_back(static_cast<MUMPS_INT>(column + 1));
+          values.push_back(it.value());
+        }
+      }
+    }
+    mumps.n = static_cast<MUMPS_INT>(matrix->rows());
+    mumps.nnz = static_cast<MUMPS_INT8>(values.size());
+    mumps.irn = rows.data();
+    mumps.jcn = columns.data();
+    mumps.a = values.data();
+  }
+  this->Run(*instance, JobAnalyzeAndFactorize);
+  mumps.irn = mumps.jcn = nullptr;
+  mumps.a = nullptr;
+  // INFOG(1) is the same on every process: all of them drop a failed instance.
+  const int status = instance->Info(1);
+  this->Instances[number] = std::move(instance);
+  if (status < 0)
+  {
+    this->End(number);
+  }
+  return status;
+}
+
+std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
+  const Eigen::SparseMatrix<double>& matrix, std::string& error)
+{
+  const int number = this->NextInstance++;
+  this->Send(FACTORIZE, number, 0);
+  const int status = this->Factor(number, &matrix);
+  if (status < 0)
+  {
+    // -10: a zero or negative pivot, as CHOLMOD's "not positive definite".
+    error = status == -10
+      ? "the normal equations are not positive definite: some part of the region is not held by "
+        "any constraint"
+      : "MUMPS failed to factor across " + std::to_string(this->GetNumberOfProcesses()) +
+        " processes (INFOG(1) = " + std::to_string(status) + ")";
+    return nullptr;
+  }
+  const Instance& instance = *this->Instances[number];
+  // INFOG(29): the factor's entries on all processes; INFOG(21): megabytes used by the
+  // process that used the most.
+  return std::make_unique<MumpsFactor>(
+    this->shared_from_this(), number, 8.0 * instance.Count(29), 1e6 * instance.Info(21));
+}
+
+Eigen::MatrixXd vtkLaplacianMumpsSolver::Solve(int number, const Eigen::MatrixXd& rhs)
+{
+  this->Send(SOLVE, number, static_cast<int>(rhs.cols()));
+  Instance& instance = *this->Instances.at(number);
+  Eigen::MatrixXd solution = rhs;
+  instance.Mumps.nrhs = static_cast<MUMPS_INT>(rhs.cols());
+  instance.Mumps.lrhs = static_cast<MUMPS_INT>(rhs.rows());
+  instance.Mumps.rhs = solution.data();
+  this->Run(instance, JobSolve);
+  instance.Mumps.rhs = nullptr;
+  return solution;
+}
+
+void vtkLaplacianMumpsSolver::Release(int number)
+{
+  this->Released.push_back(number);
+}
+
+void vtkLaplacianMumpsSolver::EndService()
+{
+  if (this->GetNumberOfProcesses() > 1)
+  {
+    this->Send(END, 0, 0);
+  }
+}
+
+void vtkLaplacianMumpsSolver::Serve()
+{
+  for (;;)
+  {
+    int message[3] = { END, 0, 0 };
+    this->Controller->Broadcast(message, 3, 0);
+    switch (message[0])
+    {
+      case FACTORIZE:
+        this->Factor(message[1], nullptr);
+        break;
+      case SOLVE:
+      {
+        auto found = this->Instances.find(message[1]);
+        if (found != this->Instances.end())
+        {
+          found->second->Mumps.nrhs = message[2];
+          this->Run(*found->second, JobSolve);
+        }
+        break;
+      }
+      case RELEASE:
+        this->End(message[1]);
+        break;
+      default:
+        return;
+    }
+  }
+}

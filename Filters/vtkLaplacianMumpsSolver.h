@@ -1,0 +1,75 @@
+/**
+ * @class   vtkLaplacianMumpsSolver
+ * @brief   factors across the MPI processes of a controller with MUMPS (not wrapped)
+ *
+ * The distributed solver of vtkPLaplacianDeformationFilter (LaplacianEditing::DistributedSolver).
+ * Every MUMPS call is collective, but only the first process runs the edit and knows when a
+ * factorization or a solve is due. So, during an update, the other processes wait in Serve()
+ * for the first one's commands and make the same MUMPS calls with it, until it calls
+ * EndService(). Each factor is one MUMPS instance on every process, under the same number; a
+ * factor the first process drops is released on all of them at the next command.
+ */
+#ifndef vtkLaplacianMumpsSolver_h
+#define vtkLaplacianMumpsSolver_h
+
+#include "DistributedSolver.h"
+
+#include "vtkMultiProcessController.h" // for vtkSmartPointer<vtkMultiProcessController>
+#include "vtkSmartPointer.h"
+
+#include <map>
+#include <memory>
+#include <vector>
+
+
+class vtkLaplacianMumpsSolver
+  : public LaplacianEditing::DistributedSolver
+  , public std::enable_shared_from_this<vtkLaplacianMumpsSolver>
+{
+public:
+  /// A solver over the controller's processes; nullptr unless it runs over MPI.
+  static std::shared_ptr<vtkLaplacianMumpsSolver> New(vtkMultiProcessController* controller);
+  /// Releases every instance; collective, as the filters are deleted on every process.
+  ~vtkLaplacianMumpsSolver() override;
+
+  std::unique_ptr<LaplacianEditing::DistributedFactor> Factorize(
+    const Eigen::SparseMatrix<double>& matrix, std::string& error) override;
+  int GetNumberOfProcesses() const override;
+
+  /// The other processes: make the first one's MUMPS calls until it ends the service.
+  void Serve();
+  /// The first process: the update's factorizations and solves are over.
+  void EndService();
+
+  /// The first process's share of a solve (used by its factors).
+  Eigen::MatrixXd Solve(int instance, const Eigen::MatrixXd& rhs);
+  /// The first process: the factor is gone; its instance is released at the next command.
+  void Release(int instance);
+
+  struct Instance;
+
+private:
+  explicit vtkLaplacianMumpsSolver(vtkMultiProcessController* controller);
+  enum Command
+  {
+    FACTORIZE,
+    SOLVE,
+    RELEASE,
+    END
+  };
+  /// The first process tells the others what to call next (after the releases due).
+  void Send(Command command, int instance, int columns);
+  /// Creates an instance and analyses and factors (the matrix on the first process only); the
+  /// instance is dropped again if MUMPS fails. Returns INFOG(1).
+  int Factor(int instance, const Eigen::SparseMatrix<double>* matrix);
+  void Run(Instance& instance, int job) const;
+  void End(int instance);
+
+  vtkSmartPointer<vtkMultiProcessController> Controller;
+  int FortranCommunicator = 0;
+  std::map<int, std::unique_ptr<Instance>> Instances;
+  std::vector<int> Released;
+  int NextInstance = 0;
+};
+
+#endif
