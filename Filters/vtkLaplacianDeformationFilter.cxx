@@ -30,7 +30,6 @@
 #include "vtkSMPTools.h"
 #include "vtkTransform.h"
 #include "vtkVariant.h"
-#include <vtksys/SystemInformation.hxx>
 
 #include <algorithm>
 #include <array>
@@ -700,8 +699,7 @@ bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
     return this->Fail(error);
   }
   // The automatic factor limit, taken once per surface so that it does not refactor each move.
-  internals.AvailableMemory =
-    0.8 * static_cast<double>(vtksys::SystemInformation().GetAvailablePhysicalMemory());
+  internals.AvailableMemory = vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit();
   internals.SurfaceTime = time;
   internals.SurfaceMerge = this->MergeCoincidentPoints;
   internals.SurfaceReach = reach;

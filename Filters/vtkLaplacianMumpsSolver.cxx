@@ -1,5 +1,6 @@
 #include "vtkLaplacianMumpsSolver.h"
 
+#include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkMPI.h"
 #include "vtkMPICommunicator.h"
 #include "vtkMultiProcessController.h"
@@ -29,8 +30,11 @@ namespace
 {
 const int JobInitialize = -1;
 const int JobEnd = -2;
+const int JobAnalyze = 1;
+const int JobFactorize = 2;
 const int JobSolve = 3;
-const int JobAnalyzeAndFactorize = 4;
+// Our own status for a factor that would not fit the machines' memory.
+const int TooLargeForTheMachines = -100000;
 
 class MumpsFactor : public le::DistributedFactor
 {
@@ -77,8 +81,11 @@ std::shared_ptr<vtkLaplacianMumpsSolver> vtkLaplacianMumpsSolver::New(
     return nullptr;
   }
   std::shared_ptr<vtkLaplacianMumpsSolver> solver(new vtkLaplacianMumpsSolver(controller));
-  solver->FortranCommunicator =
-    static_cast<int>(MPI_Comm_c2f(*communicator->GetMPIComm()->GetHandle()));
+  solver->Communicator = *communicator->GetMPIComm()->GetHandle();
+  solver->FortranCommunicator = static_cast<int>(MPI_Comm_c2f(solver->Communicator));
+  // Collective: every process makes its solver in the same update.
+  MPI_Comm_split_type(solver->Communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL,
+    &solver->MachineCommunicator);
   return solver;
 }
 
@@ -96,6 +103,7 @@ vtkLaplacianMumpsSolver::~vtkLaplacianMumpsSolver()
     {
       this->End(this->Instances.begin()->first);
     }
+    MPI_Comm_free(&this->MachineCommunicator);
   }
 }
 
@@ -169,7 +177,15 @@ int vtkLaplacianMumpsSolver::Factor(int number, const Eigen::SparseMatrix<double
     mumps.jcn = columns.data();
     mumps.a = values.data();
   }
-  this->Run(*instance, JobAnalyzeAndFactorize);
+  this->Run(*instance, JobAnalyze);
+  if (instance->Info(1) >= 0 && !this->FitsTheMachines(*instance))
+  {
+    instance->Mumps.infog[0] = TooLargeForTheMachines;
+  }
+  else
+  {
+    this->Run(*instance, JobFactorize);
+  }
   mumps.irn = mumps.jcn = nullptr;
   mumps.a = nullptr;
   // INFOG(1) is the same on every process: all of them drop a failed instance.
@@ -182,6 +198,20 @@ int vtkLaplacianMumpsSolver::Factor(int number, const Eigen::SparseMatrix<double
   return status;
 }
 
+bool vtkLaplacianMumpsSolver::FitsTheMachines(const Instance& instance) const
+{
+  // Processes on one machine share its memory: the shares MUMPS's analysis estimates for them
+  // (INFO(15), megabytes) must fit together in 80% of what it has available, the filter's
+  // automatic limit, on every machine.
+  const int share = instance.Mumps.info[14];
+  int onThisMachine = 0;
+  MPI_Allreduce(&share, &onThisMachine, 1, MPI_INT, MPI_SUM, this->MachineCommunicator);
+  const double available = vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit();
+  int fits = onThisMachine <= available ? 1 : 0, fitsEverywhere = 0;
+  MPI_Allreduce(&fits, &fitsEverywhere, 1, MPI_INT, MPI_MIN, this->Communicator);
+  return fitsEverywhere != 0;
+}
+
 std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
   const Eigen::SparseMatrix<double>& matrix, std::string& error)
 {
@@ -191,11 +221,22 @@ std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
   if (status < 0)
   {
     // -10: a zero or negative pivot, as CHOLMOD's "not positive definite".
-    error = status == -10
-      ? "the normal equations are not positive definite: some part of the region is not held by "
-        "any constraint"
-      : "MUMPS failed to factor across " + std::to_string(this->GetNumberOfProcesses()) +
-        " processes (INFOG(1) = " + std::to_string(status) + ")";
+    const std::string processes = std::to_string(this->GetNumberOfProcesses()) + " processes";
+    if (status == TooLargeForTheMachines)
+    {
+      error = "the factor would need more memory than a machine has available, even across " +
+        processes + "; choose a smaller region of interest or add machines";
+    }
+    else if (status == -10)
+    {
+      error = "the normal equations are not positive definite: some part of the region is not "
+              "held by any constraint";
+    }
+    else
+    {
+      error = "MUMPS failed to factor across " + processes + " (INFOG(1) = " +
+        std::to_string(status) + ")";
+    }
     return nullptr;
   }
   const Instance& instance = *this->Instances[number];

@@ -7,13 +7,16 @@
  * factorization or a solve is due. So, during an update, the other processes wait in Serve()
  * for the first one's commands and make the same MUMPS calls with it, until it calls
  * EndService(). Each factor is one MUMPS instance on every process, under the same number; a
- * factor the first process drops is released on all of them at the next command.
+ * factor the first process drops is released on all of them at the next command. Processes
+ * that share a machine share its memory: a factor whose estimated shares do not fit a machine
+ * is refused with an error after the analysis, before it is attempted.
  */
 #ifndef vtkLaplacianMumpsSolver_h
 #define vtkLaplacianMumpsSolver_h
 
 #include "DistributedSolver.h"
 
+#include "vtkMPI.h"                    // for MPI_Comm
 #include "vtkMultiProcessController.h" // for vtkSmartPointer<vtkMultiProcessController>
 #include "vtkSmartPointer.h"
 
@@ -59,13 +62,17 @@ private:
   };
   /// The first process tells the others what to call next (after the releases due).
   void Send(Command command, int instance, int columns);
-  /// Creates an instance and analyses and factors (the matrix on the first process only); the
-  /// instance is dropped again if MUMPS fails. Returns INFOG(1).
+  /// Creates an instance, analyses and, if the machines can hold it, factors (the matrix on the
+  /// first process only); the instance is dropped again if that fails. Returns INFOG(1).
   int Factor(int instance, const Eigen::SparseMatrix<double>* matrix);
   void Run(Instance& instance, int job) const;
   void End(int instance);
+  /// Whether the analysed factor's shares fit the memory of the machines that hold them.
+  bool FitsTheMachines(const Instance& instance) const;
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
+  MPI_Comm Communicator = MPI_COMM_NULL;
+  MPI_Comm MachineCommunicator = MPI_COMM_NULL; // the processes on this one's machine
   int FortranCommunicator = 0;
   std::map<int, std::unique_ptr<Instance>> Instances;
   std::vector<int> Released;

@@ -18,6 +18,8 @@
 #include "vtkSMPTools.h"
 #include "vtkSignedCharArray.h"
 
+#include <vtksys/SystemInformation.hxx>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,6 +27,14 @@
 #include <unordered_map>
 
 namespace le = LaplacianEditing;
+
+double vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit()
+{
+  // SystemInformation reads the memory figures only when asked to (RunMemoryCheck).
+  vtksys::SystemInformation system;
+  system.RunMemoryCheck();
+  return 0.8 * static_cast<double>(system.GetAvailablePhysicalMemory());
+}
 
 vtkMTimeType vtkLaplacianSurfaceAdapter::GetContentTime(vtkPolyData* surface)
 {

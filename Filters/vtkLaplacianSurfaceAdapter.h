@@ -62,6 +62,9 @@ public:
   /// post filter does on every update), which would refactor every move and drop the commits.
   static vtkMTimeType GetContentTime(vtkPolyData* surface);
 
+  /// The automatic factor limit, in megabytes: 80% of the physical memory available now.
+  static double GetAutomaticFactorLimit();
+
   /// The input id of each point of the mesh (SurfaceMesh::GetVertexOfPoint's points), and the
   /// index among the input's polygons of each polygon kept, with the kept polygons in mesh
   /// point ids.
