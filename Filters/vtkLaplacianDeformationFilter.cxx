@@ -1086,7 +1086,12 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Solver: " << name(this->Solver, { "CHOLMOD", "SimplicialLDLT", "MUMPS" }) << "\n";
   os << indent << "Ordering: "
      << name(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
-  os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB\n";
+  os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB";
+  if (this->MaximumFactorMemory <= 0.0)
+  {
+    os << " (automatic: " << vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit() << " MB now)";
+  }
+  os << "\n";
   os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
   os << indent << "RoleColors: " << (this->RoleColors ? "On" : "Off") << "\n";

@@ -198,7 +198,7 @@ int vtkLaplacianMumpsSolver::Factor(int number, const Eigen::SparseMatrix<double
   return status;
 }
 
-bool vtkLaplacianMumpsSolver::FitsTheMachines(const Instance& instance) const
+bool vtkLaplacianMumpsSolver::FitsTheMachines(const Instance& instance)
 {
   // Processes on one machine share its memory: the shares MUMPS's analysis estimates for them
   // (INFO(15), megabytes) must fit together in 80% of what it has available, the filter's
@@ -207,9 +207,17 @@ bool vtkLaplacianMumpsSolver::FitsTheMachines(const Instance& instance) const
   int onThisMachine = 0;
   MPI_Allreduce(&share, &onThisMachine, 1, MPI_INT, MPI_SUM, this->MachineCommunicator);
   const double available = vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit();
-  int fits = onThisMachine <= available ? 1 : 0, fitsEverywhere = 0;
-  MPI_Allreduce(&fits, &fitsEverywhere, 1, MPI_INT, MPI_MIN, this->Communicator);
-  return fitsEverywhere != 0;
+  // The machine that lacks the most reports its figures.
+  double shortfall[2] = { onThisMachine - available, 0.0 }, largest[2];
+  int rank = 0;
+  MPI_Comm_rank(this->Communicator, &rank);
+  shortfall[1] = rank;
+  MPI_Allreduce(shortfall, largest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, this->Communicator);
+  double figures[2] = { static_cast<double>(onThisMachine), available };
+  MPI_Bcast(figures, 2, MPI_DOUBLE, static_cast<int>(largest[1]), this->Communicator);
+  this->MachineNeed = figures[0];
+  this->MachineLimit = figures[1];
+  return largest[0] <= 0.0;
 }
 
 std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
@@ -224,8 +232,11 @@ std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
     const std::string processes = std::to_string(this->GetNumberOfProcesses()) + " processes";
     if (status == TooLargeForTheMachines)
     {
-      error = "the factor would need more memory than a machine has available, even across " +
-        processes + "; choose a smaller region of interest or add machines";
+      error = "MUMPS estimates that the shares of the factor across " + processes + " need " +
+        std::to_string(static_cast<long>(this->MachineNeed)) + " MB on one machine, more than " +
+        "the " + std::to_string(static_cast<long>(this->MachineLimit)) +
+        " MB it may use (80% of what it has available); choose a smaller region of interest " +
+        "or spread the ranks over more machines";
     }
     else if (status == -10)
     {

@@ -67,8 +67,9 @@ private:
   int Factor(int instance, const Eigen::SparseMatrix<double>* matrix);
   void Run(Instance& instance, int job) const;
   void End(int instance);
-  /// Whether the analysed factor's shares fit the memory of the machines that hold them.
-  bool FitsTheMachines(const Instance& instance) const;
+  /// Whether the analysed factor's shares fit the memory of the machines that hold them; sets
+  /// MachineNeed and MachineLimit to the figures of the machine with the least room.
+  bool FitsTheMachines(const Instance& instance);
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
   MPI_Comm Communicator = MPI_COMM_NULL;
@@ -77,6 +78,8 @@ private:
   std::map<int, std::unique_ptr<Instance>> Instances;
   std::vector<int> Released;
   int NextInstance = 0;
+  double MachineNeed = 0.0;  // MB
+  double MachineLimit = 0.0; // MB
 };
 
 #endif

@@ -607,12 +607,22 @@ std::string CholmodFactor::Analyze(
     common.method[0].ordering = method;
     this->Internal->Factor = cholmod_analyze(&view, &common);
   }
+  if (common.status == CHOLMOD_TOO_LARGE)
+  {
+    return "the factor would have more than 2^31 entries, CHOLMOD's limit; choose a smaller "
+           "region of interest";
+  }
   if (!this->Internal->Factor || !this->Internal->Factor->is_super)
   {
     return "the symbolic analysis failed (CHOLMOD status " + std::to_string(common.status) + ")";
   }
   this->Internal->Schedule(parts);
   return {};
+}
+
+bool CholmodFactor::IsTooLarge() const
+{
+  return this->Internal->Common.status == CHOLMOD_TOO_LARGE;
 }
 
 double CholmodFactor::GetPredictedBytes() const

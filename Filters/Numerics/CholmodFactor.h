@@ -36,6 +36,8 @@ public:
     const Eigen::SparseMatrix<double>& matrix, FillOrdering ordering, int parts, int blockSize = 1);
   /// Bytes of the factor the analysis predicts: values and row indices.
   double GetPredictedBytes() const;
+  /// Whether the analysis failed because the factor is beyond CHOLMOD's 32-bit indices.
+  bool IsTooLarge() const;
   /// Factors the analysed matrix; false if it is not positive definite.
   bool Factorize(const Eigen::SparseMatrix<double>& matrix);
 

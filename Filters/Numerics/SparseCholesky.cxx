@@ -62,7 +62,7 @@ struct FactorReport
   double FactorizationSeconds = 0.0;
   double FactorBytes = 0.0;
   double ParallelShare = 0.0;
-  bool TooLarge = false; // the error is the memory limit's
+  bool TooLarge = false; // the error is the memory limit's, or CHOLMOD's index range
 };
 
 const char* const NotPositiveDefinite = "the normal equations are not positive definite: some part "
@@ -86,6 +86,7 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(const SparseMatrix& m
   const int parts = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   report.Error = backend->Factor.Analyze(matrix, ordering, parts, blockSize);
   report.AnalysisSeconds = SecondsSince(start);
+  report.TooLarge = backend->Factor.IsTooLarge();
   report.FactorBytes = backend->Factor.GetPredictedBytes();
   report.ParallelShare = backend->Factor.GetParallelShare();
   if (report.Error.empty() && maximumBytes > 0.0 && report.FactorBytes > maximumBytes)
