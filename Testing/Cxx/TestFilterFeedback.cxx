@@ -285,6 +285,21 @@ TEST(Feedback, MUMPSOutsideMPISaysWhatItNeeds)
   EXPECT_EQ(filter->GetErrorCode(), vtkErrorCode::NoError);
 }
 
+TEST(Feedback, TheAutomaticFactorLimitIsTheMemoryAvailable)
+{
+  // MaximumFactorMemory 0 is 80% of the physical memory available: a real figure, not "no
+  // limit" (vtksys reports 0 MB until its memory check has run).
+  vtkNew<Filter> filter;
+  std::ostringstream text;
+  filter->Print(text);
+  const std::string printed = text.str();
+  const std::size_t at = printed.find("(automatic: ");
+  ASSERT_NE(at, std::string::npos) << printed;
+  const double megabytes = std::stod(printed.substr(at + 12));
+  EXPECT_GT(megabytes, 100.0) << printed;
+  EXPECT_LT(megabytes, 1e9) << printed;
+}
+
 TEST(Feedback, PrintSelfNamesEnumsAndReportsTheLastUpdate)
 {
   auto filter = QuickStart(Bunny());
