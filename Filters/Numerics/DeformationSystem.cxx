@@ -75,8 +75,8 @@ std::string DeformationSystem::Build(
   normalMatrix.makeCompressed();
   this->RegionOperatorTransposed = this->RegionOperator.transpose();
   this->RestRightHandSide = this->RegionOperatorTransposed * (this->RestDelta - this->FixedPart);
-  const std::string error = this->Factor.Factorize(
-    normalMatrix, options.Backend, options.Ordering, options.MaximumFactorBytes, 1, options.Distributed);
+  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
+    options.MaximumFactorBytes, 1, options.Distributed);
   if (!error.empty())
   {
     return error;

@@ -190,7 +190,8 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
   }
   // Too large for this process: its share of a factor across all of them may fit.
   this->Distributed = distributed &&
-    (backend == SolverBackend::Distributed || (report.TooLarge && distributed->GetNumberOfProcesses() > 1));
+    (backend == SolverBackend::Distributed ||
+      (report.TooLarge && distributed->GetNumberOfProcesses() > 1));
   if (this->Distributed)
   {
     const double analysisSeconds = report.AnalysisSeconds;

@@ -567,7 +567,10 @@ struct RecordingDistributedSolver : DistributedSolver
   struct Factor : DistributedFactor
   {
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper> LDLT;
-    Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const override { return this->LDLT.solve(rhs); }
+    Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const override
+    {
+      return this->LDLT.solve(rhs);
+    }
     double GetBytes() const override { return 1.0; }
     double GetLargestShareBytes() const override { return 0.5; }
   };
@@ -597,21 +600,22 @@ TEST(SparseCholesky, FactorsTooLargeForOneProcessGoAcrossProcesses)
   RecordingDistributedSolver processes;
   SparseCholesky factor;
 
-  ASSERT_EQ(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD, 0.0, 1, &processes), "");
+  const auto factorize = [&](SolverBackend backend, double maximumBytes) {
+    return factor.Factorize(matrix, backend, FillOrdering::AMD, maximumBytes, 1, &processes);
+  };
+  ASSERT_EQ(factorize(SolverBackend::Cholmod, 0.0), "");
   EXPECT_FALSE(factor.IsDistributed()) << "a factor within the limit stays on this process";
   EXPECT_EQ(processes.Factorizations, 0);
 
-  ASSERT_EQ(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD, 1.0, 1, &processes), "");
+  ASSERT_EQ(factorize(SolverBackend::Cholmod, 1.0), "");
   EXPECT_TRUE(factor.IsDistributed()) << "a factor above the limit goes across the processes";
   EXPECT_EQ(factor.GetFactorBytes(), 1.0);
   EXPECT_LT((matrix * factor.Solve(rhs) - rhs).norm() / rhs.norm(), 1e-12);
 
   processes.Processes = 1;
-  EXPECT_NE(factor.Factorize(matrix, SolverBackend::Cholmod, FillOrdering::AMD, 1.0, 1, &processes)
-              .find("more than the"),
-    std::string::npos)
+  EXPECT_NE(factorize(SolverBackend::Cholmod, 1.0).find("more than the"), std::string::npos)
     << "one process has nowhere to spread the factor: the limit's error stands";
-  EXPECT_EQ(factor.Factorize(matrix, SolverBackend::Distributed, FillOrdering::AMD, 0.0, 1, &processes), "");
+  EXPECT_EQ(factorize(SolverBackend::Distributed, 0.0), "");
   EXPECT_TRUE(factor.IsDistributed()) << "the Distributed backend always factors across";
   EXPECT_EQ(processes.Factorizations, 2);
   EXPECT_NE(factor.Factorize(matrix, SolverBackend::Distributed).find("MPI"), std::string::npos)
