@@ -208,16 +208,18 @@ bool vtkLaplacianMumpsSolver::FitsTheMachines(const Instance& instance)
   MPI_Allreduce(&share, &onThisMachine, 1, MPI_INT, MPI_SUM, this->MachineCommunicator);
   const double available = vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit();
   // The machine that lacks the most reports its figures.
-  double shortfall[2] = { onThisMachine - available, 0.0 }, largest[2];
-  int rank = 0;
-  MPI_Comm_rank(this->Communicator, &rank);
-  shortfall[1] = rank;
-  MPI_Allreduce(shortfall, largest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, this->Communicator);
+  struct
+  {
+    double Value;
+    int Rank;
+  } shortfall{ onThisMachine - available, 0 }, largest{ 0.0, 0 };
+  MPI_Comm_rank(this->Communicator, &shortfall.Rank);
+  MPI_Allreduce(&shortfall, &largest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, this->Communicator);
   double figures[2] = { static_cast<double>(onThisMachine), available };
-  MPI_Bcast(figures, 2, MPI_DOUBLE, static_cast<int>(largest[1]), this->Communicator);
+  MPI_Bcast(figures, 2, MPI_DOUBLE, largest.Rank, this->Communicator);
   this->MachineNeed = figures[0];
   this->MachineLimit = figures[1];
-  return largest[0] <= 0.0;
+  return largest.Value <= 0.0;
 }
 
 std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
