@@ -39,12 +39,10 @@ const int TooLargeForTheMachines = -100000;
 class MumpsFactor : public le::DistributedFactor
 {
 public:
-  MumpsFactor(std::shared_ptr<vtkLaplacianMumpsSolver> solver, int instance, double bytes,
-    double largestShareBytes)
+  MumpsFactor(std::shared_ptr<vtkLaplacianMumpsSolver> solver, int instance, double bytes)
     : Solver(std::move(solver))
     , Number(instance)
     , Bytes(bytes)
-    , LargestShareBytes(largestShareBytes)
   {
   }
   ~MumpsFactor() override { this->Solver->Release(this->Number); }
@@ -53,13 +51,11 @@ public:
     return this->Solver->Solve(this->Number, rhs);
   }
   double GetBytes() const override { return this->Bytes; }
-  double GetLargestShareBytes() const override { return this->LargestShareBytes; }
 
 private:
   std::shared_ptr<vtkLaplacianMumpsSolver> Solver;
   int Number;
   double Bytes;
-  double LargestShareBytes;
 };
 
 bool MPIRunning()
@@ -253,10 +249,8 @@ std::unique_ptr<le::DistributedFactor> vtkLaplacianMumpsSolver::Factorize(
     return nullptr;
   }
   const Instance& instance = *this->Instances[number];
-  // INFOG(29): the factor's entries on all processes; INFOG(21): megabytes used by the
-  // process that used the most.
-  return std::make_unique<MumpsFactor>(
-    this->shared_from_this(), number, 8.0 * instance.Count(29), 1e6 * instance.Info(21));
+  // INFOG(29): the factor's entries on all processes.
+  return std::make_unique<MumpsFactor>(this->shared_from_this(), number, 8.0 * instance.Count(29));
 }
 
 Eigen::MatrixXd vtkLaplacianMumpsSolver::Solve(int number, const Eigen::MatrixXd& rhs)

@@ -13,7 +13,6 @@
 #define vtkLaplacianPieceEdit_h
 
 #include "AffineRows.h"
-#include "EditRegion.h"
 #include "vtkLaplacianNormalRefresher.h"
 
 #include "vtkSignedCharArray.h" // for the EditRole array
@@ -71,7 +70,6 @@ public:
   /// The region rows whose positions the piece needs, in the order Write takes them.
   const std::vector<int>& GetRows() const { return this->Rows; }
 
-  bool IsAffine() const { return this->Affine.Offsets.rows() == static_cast<Eigen::Index>(this->Rows.size()); }
   /// The rows' positions for the maps' entries (HandleMapParameters).
   LaplacianEditing::Positions Evaluate(const Eigen::VectorXd& parameters) const
   {

@@ -20,9 +20,8 @@ class DistributedFactor
 public:
   virtual ~DistributedFactor() = default;
   virtual Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const = 0;
-  /// Bytes of the factor on all processes together, and on the largest share of one.
+  /// Bytes of the factor on all processes together.
   virtual double GetBytes() const = 0;
-  virtual double GetLargestShareBytes() const = 0;
 };
 
 class DistributedSolver

@@ -572,7 +572,6 @@ struct RecordingDistributedSolver : DistributedSolver
       return this->LDLT.solve(rhs);
     }
     double GetBytes() const override { return 1.0; }
-    double GetLargestShareBytes() const override { return 0.5; }
   };
   int Processes = 2;
   int Factorizations = 0;
