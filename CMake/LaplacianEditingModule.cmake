@@ -1,5 +1,7 @@
-# The LaplacianEditing module: its sources are Filters/ (the deformation filter and the adapters
-# over the numerical core) and Widgets/ (the handle widget). VTK builds it as a Remote module
+# The LaplacianEditing module: its sources are Filters/ (the public filters), Filters/Stages/
+# (the stages of their RequestData, adapters between vtkPolyData and the numerical core),
+# Filters/Parallel/ (the MPI filter and what it sends between ranks) and Widgets/ (the handle
+# widget). VTK builds it as a Remote module
 # through the top-level CMakeLists.txt; the standalone and ParaView builds through the staged
 # module directory of laplacian_editing_stage_module (LaplacianEditingCommon.cmake).
 get_filename_component(_le_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
@@ -11,15 +13,20 @@ add_subdirectory("${_le_root}/Filters/Numerics" "${CMAKE_CURRENT_BINARY_DIR}/Num
 set(classes
   Filters/vtkBumpyPlaneSource
   Filters/vtkLaplacianDeformationFilter
-  Filters/vtkPLaplacianDeformationFilter
+  Filters/Parallel/vtkPLaplacianDeformationFilter
   Widgets/vtkDeformationHandleRepresentation
   Widgets/vtkDeformationHandleWidget)
 list(TRANSFORM classes PREPEND "${_le_root}/")
-# Adapters between vtkPolyData and the core, not part of the module's API.
+# The filters' stages and the parallel filter's helpers, not part of the module's API.
 set(private_classes
-  Filters/vtkLaplacianSurfaceAdapter
-  Filters/vtkLaplacianNormalRefresher
-  Filters/vtkLaplacianPieceEdit)
+  Filters/Stages/vtkLaplacianEditSolver
+  Filters/Stages/vtkLaplacianHandleMaps
+  Filters/Stages/vtkLaplacianNormalRefresher
+  Filters/Stages/vtkLaplacianOutputWriter
+  Filters/Stages/vtkLaplacianRegionSelector
+  Filters/Stages/vtkLaplacianRestShape
+  Filters/Stages/vtkLaplacianSurfaceAdapter
+  Filters/Parallel/vtkLaplacianPieceEdit)
 list(TRANSFORM private_classes PREPEND "${_le_root}/")
 set(private_sources ${private_classes})
 set(private_headers ${private_classes})
@@ -36,8 +43,8 @@ if (LAPLACIAN_EDITING_USE_MUMPS AND TARGET VTK::ParallelMPI)
   find_library(MUMPS_COMMON_LIBRARY mumps_common)
   if (MUMPS_INCLUDE_DIR AND DMUMPS_LIBRARY AND MUMPS_COMMON_LIBRARY)
     set(_le_mumps ON)
-    list(APPEND private_sources "${_le_root}/Filters/vtkLaplacianMumpsSolver.cxx")
-    list(APPEND private_headers "${_le_root}/Filters/vtkLaplacianMumpsSolver.h")
+    list(APPEND private_sources "${_le_root}/Filters/Parallel/vtkLaplacianMumpsSolver.cxx")
+    list(APPEND private_headers "${_le_root}/Filters/Parallel/vtkLaplacianMumpsSolver.h")
     message(STATUS "MUMPS: ${DMUMPS_LIBRARY}")
   else ()
     message(STATUS "MUMPS not found: regions are factored on one MPI process")
@@ -54,7 +61,9 @@ vtk_module_add_module(LaplacianEditing::Deformation ${force_static}
   SOURCES ${private_sources}
   PRIVATE_HEADERS ${private_headers})
 vtk_module_include(LaplacianEditing::Deformation
-  PUBLIC "$<BUILD_INTERFACE:${_le_root}/Filters>" "$<BUILD_INTERFACE:${_le_root}/Widgets>")
+  PUBLIC "$<BUILD_INTERFACE:${_le_root}/Filters>" "$<BUILD_INTERFACE:${_le_root}/Filters/Parallel>"
+    "$<BUILD_INTERFACE:${_le_root}/Widgets>"
+  PRIVATE "${_le_root}/Filters/Stages")
 vtk_module_link(LaplacianEditing::Deformation PRIVATE LaplacianEditing::Numerics)
 if (_le_mumps)
   vtk_module_link(LaplacianEditing::Deformation PRIVATE

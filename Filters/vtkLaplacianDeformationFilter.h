@@ -57,6 +57,8 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
 struct vtkLaplacianEditState;
+struct vtkLaplacianRegionParameters;
+struct vtkLaplacianSolverOptions;
 namespace LaplacianEditing
 {
 class DistributedSolver;
@@ -613,32 +615,22 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * The edit of one whole surface, in stages. Caches are keyed on the input's MTime and the
-   * selection array's, and on the properties through the core's requests. On bad input: an
-   * error, and the output is the input.
+   * The edit of one whole surface, in stages (see RunStages). On bad input: an error, and the
+   * output is the input.
    */
   void EditSurface(vtkPolyData* input, vtkPolyData* output);
 
   /**
-   * The handle labels of `input` for `selection`: 2 on the selected points and on the points of
-   * selected cells, 0 elsewhere. Nodes whose PROCESS_ID names another piece than `piece` are
-   * skipped, as ParaView's selections of ids address each piece.
-   */
-  static vtkSmartPointer<vtkIntArray> LabelSelection(
-    vtkPolyData* input, vtkSelection* selection, int piece);
-
-  /**
-   * The labels of the selection on port 1 for the surface being edited: LabelSelection for
-   * piece 0 here; the parallel filter's gathered surface carries those of its pieces.
+   * The labels of the selection on port 1 for the surface being edited
+   * (vtkLaplacianRegionSelector::LabelSelection for piece 0); the parallel filter's gathered
+   * surface carries those of its pieces.
    */
   virtual vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection);
 
   /**
-   * How far from its seeds (the handle centre, or the labelled points) the edit can reach, in
-   * mesh units: `extent` is the distance from the handle centre to the nearest polygon corner
-   * or, for labels, half the labelled points' extent; `growth` how far a selection's ROI grows.
+   * The properties that choose the region, radii in mesh units.
    */
-  double ReachMargin(bool labelled, double extent, double growth) const;
+  vtkLaplacianRegionParameters RegionParameters() const;
 
   /**
    * A radius property in mesh units, after RadiusUnits.
@@ -652,8 +644,7 @@ protected:
   double WholeDiagonal = 0.0;
 
   /**
-   * Adds the EditRole array to the output when GenerateEditRoles is on, as the active scalars
-   * where the output has none, with the Fig. 2 colours when RoleColors is on.
+   * Adds the EditRole array to the output as GenerateEditRoles and RoleColors say.
    */
   void AddEditRoles(vtkPolyData* output, vtkDataArray* roles);
 
@@ -723,30 +714,21 @@ protected:
   double ARAPEnergy = 0.0;
 
 private:
-  // The stages of EditSurface; each returns false, with an error reported, when the edit
-  // cannot go on.
+  // The stages: the rest shape and the labels (CheckInput), the surface graph, the region and
+  // its system, the rotation model, the solve, the output. Each returns false, with an error
+  // reported, when the edit cannot go on.
+  void RunStages(vtkPolyData* input, vtkPolyData* output);
   bool CheckInput(vtkPolyData* input);
-  // The handle from the selection on port 1, as array-mode labels.
-  bool LabelSelectedPoints(vtkPolyData* input, vtkSelection* selection);
-  // How far, in mesh units, the ROI reaches around a selection's handle (ROIRadius); 0 when
-  // the labels come from an array, which holds the ROI itself.
-  double SelectionGrowth() const;
   bool UpdateSurfaceGraph(vtkPolyData* rest);
-  // The part of the rest surface the edit can reach, for the surface graph.
-  void ComputeReach(vtkPolyData* rest);
   bool UpdateRegion(vtkPolyData* rest);
   bool UpdateRotationModel();
-  void MapHandles();
-  // The handle groups' rest centroids, once per region (GetHandleGroupCenter reads them).
-  void FindGroupCenters();
   bool Solve();
-  bool Fail(const std::string& message);
+  vtkLaplacianSolverOptions SolverOptions();
+  void UpdateFactorizationCounts();
   void ResetStatistics();
-  // WholeDiagonal where set, else `ownDiagonal`: what radii in diagonal units refer to.
-  double DiagonalOfWhole(double ownDiagonal) const;
-  // Warnings about a region that is unlikely what the user meant.
-  void WarnAboutRegion(int centerVertex);
-  vtkPolyData* RestSurface(vtkPolyData* input);
+  // An error for a non-empty message.
+  bool Check(const std::string& error);
+  bool Fail(const std::string& message);
 
   vtkLaplacianDeformationFilter(const vtkLaplacianDeformationFilter&) = delete;
   void operator=(const vtkLaplacianDeformationFilter&) = delete;

@@ -45,9 +45,17 @@ public:
     }
   };
 
+  /// What every editor requires of its input: points, polygons, no strips. Returns an error
+  /// message, empty on success.
+  static std::string CheckSurface(vtkPolyData* input);
+
   /// Checks the coordinates and builds the surface graph of the polygons with a corner in
   /// `reach` and the ring of polygons around them. Returns an error message, empty on success.
   std::string Build(vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach);
+
+  /// Build, unless the graph held was built from the same content of `input` (GetContentTime),
+  /// merge flag and reach; `rebuilt` says whether it built.
+  std::string Update(vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach, bool& rebuilt);
 
   /// The polygons of `input` with a corner in `reach`, with their point and cell data and the
   /// input ids of their points and cells (vtkOriginalPointIds, vtkOriginalCellIds): the part of
@@ -99,12 +107,12 @@ public:
   /// An EditRole array of `count` fixed points, with its colours (see GenerateEditRoles).
   static vtkSmartPointer<vtkSignedCharArray> NewRoles(vtkIdType count);
 
-  /// A copy of `points` with the region's points moved to `solution` (rows follow the region).
-  vtkSmartPointer<vtkPoints> MovePoints(
-    vtkPoints* points, const LaplacianEditing::Positions& solution) const;
-
 private:
   std::shared_ptr<LaplacianEditing::SurfaceMesh> Mesh;
+  // What the graph was built from (Update): content time, merge flag, reach.
+  vtkMTimeType BuiltTime = 0;
+  bool BuiltMerge = false;
+  Reach BuiltReach;
   vtkIdType NumberOfInputPoints = 0;
   std::vector<vtkIdType> InputPoints;
   std::vector<vtkIdType> InputPolygons;

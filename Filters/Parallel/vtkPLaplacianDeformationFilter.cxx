@@ -13,6 +13,7 @@
 #ifdef LAPLACIAN_EDITING_HAS_MUMPS
 #include "vtkLaplacianMumpsSolver.h"
 #endif
+#include "vtkLaplacianRegionSelector.h"
 #include "vtkLaplacianSurfaceAdapter.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
@@ -157,7 +158,8 @@ vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vt
   if (!internals.PieceLabels || !std::equal(key, key + 2, internals.PieceLabelsKey))
   {
     std::copy(key, key + 2, internals.PieceLabelsKey);
-    internals.PieceLabels = LabelSelection(input, selection, this->Controller->GetLocalProcessId());
+    internals.PieceLabels = vtkLaplacianRegionSelector::LabelSelection(
+      input, selection, this->Controller->GetLocalProcessId());
     internals.PieceLabels->SetName(GatheredLabels);
   }
   return internals.PieceLabels;
@@ -237,7 +239,8 @@ void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
     return; // nothing labelled, or no polygon: every piece goes, and the edit says why
   }
   const double growth = fromSelection ? this->AbsoluteRadius(this->ROIRadius) : 0.0;
-  reach.Margin = this->ReachMargin(labelled, extent, growth) + 2.0 * global[6];
+  reach.Margin = vtkLaplacianRegionSelector::ReachMargin(this->RegionParameters(), labelled, extent, growth) +
+    2.0 * global[6];
 }
 
 double vtkPLaplacianDeformationFilter::LongestPolygonEdge(vtkPolyData* input)

@@ -15,7 +15,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 #include "vtkSignedCharArray.h"
 
 #include <vtksys/SystemInformation.hxx>
@@ -222,6 +221,44 @@ vtkSmartPointer<vtkPolyData> vtkLaplacianSurfaceAdapter::ExtractReach(
   part->GetPointData()->AddArray(originalPoints);
   part->GetCellData()->AddArray(originalCells);
   return part;
+}
+
+std::string vtkLaplacianSurfaceAdapter::CheckSurface(vtkPolyData* input)
+{
+  if (input->GetNumberOfPoints() == 0)
+  {
+    return "The input mesh is empty.";
+  }
+  if (input->GetNumberOfPolys() == 0)
+  {
+    return "The input has no polygons (only vertices, lines or strips): the filter edits "
+           "triangle surfaces.";
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    return "The input has triangle strips; run vtkTriangleFilter first.";
+  }
+  return {};
+}
+
+std::string vtkLaplacianSurfaceAdapter::Update(
+  vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach, bool& rebuilt)
+{
+  const vtkMTimeType time = GetContentTime(input);
+  rebuilt = !(this->Mesh && time == this->BuiltTime &&
+    mergeCoincidentPoints == this->BuiltMerge && reach == this->BuiltReach);
+  if (!rebuilt)
+  {
+    return {};
+  }
+  const std::string error = this->Build(input, mergeCoincidentPoints, reach);
+  if (error.empty())
+  {
+    this->BuiltTime = time;
+    this->BuiltMerge = mergeCoincidentPoints;
+    this->BuiltReach = reach;
+  }
+  return error;
 }
 
 std::string vtkLaplacianSurfaceAdapter::Build(
@@ -448,22 +485,4 @@ vtkSmartPointer<vtkSignedCharArray> vtkLaplacianSurfaceAdapter::NewRoles(vtkIdTy
   roles->SetNumberOfTuples(count);
   roles->FillValue(static_cast<signed char>(le::VertexRole::Fixed));
   return roles;
-}
-
-vtkSmartPointer<vtkPoints> vtkLaplacianSurfaceAdapter::MovePoints(
-  vtkPoints* points, const le::Positions& solution) const
-{
-  // Every point outside the region keeps its input coordinates exactly.
-  auto moved = vtkSmartPointer<vtkPoints>::New();
-  moved->SetDataType(points->GetDataType());
-  moved->DeepCopy(points);
-  const auto& roiPoints = this->RoiPoints;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(roiPoints.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const le::Vector3 p = this->Denormalize(solution.row(roiPoints[r].second).transpose());
-      moved->SetPoint(roiPoints[r].first, p.data());
-    }
-  });
-  return moved;
 }
