@@ -15,17 +15,96 @@ Vector3 Apply(const AffineMap& map, const Vector3& p)
 {
   return map.leftCols<3>() * p + map.col(3);
 }
+
+// Anderson acceleration's history during one solve: the last `size` differences of g and of
+// the residual f = g - x, a ring of the workspace's columns.
+class AndersonRing
+{
+public:
+  AndersonRing(int size, Eigen::Index length, ArapIterate::Workspace& work)
+    : Size(size)
+    , Length(length)
+  {
+    work.GDifferences.resize(length, size);
+    work.FDifferences.resize(length, size);
+  }
+
+  // `next` becomes g, mixed with the history when `accelerate` and there is one; returns
+  // whether it mixed.
+  bool Mix(const Eigen::MatrixXd& g, const Eigen::MatrixXd& x, bool accelerate,
+    ArapIterate::Workspace& work, Eigen::MatrixXd& next)
+  {
+    const auto gFlat = Eigen::Map<const Eigen::VectorXd>(g.data(), this->Length);
+    work.Residual = gFlat - Eigen::Map<const Eigen::VectorXd>(x.data(), this->Length);
+    next = g;
+    const bool accelerated = accelerate && this->HasPrevious;
+    if (accelerated)
+    {
+      this->Newest = (this->Newest + 1) % this->Size;
+      this->Stored = std::min(this->Stored + 1, this->Size);
+      work.GDifferences.col(this->Newest) = gFlat - work.PreviousG;
+      work.FDifferences.col(this->Newest) = work.Residual - work.PreviousF;
+      // The mixing weights minimize |f - dF theta|: with at most History columns, through the
+      // small Gram matrix (a QR of the tall dF took 20-35 ms at 30k vertices, this < 1 ms); a
+      // rank-revealing solve keeps nearly dependent differences harmless.
+      const auto dF = work.FDifferences.leftCols(this->Stored);
+      const Eigen::MatrixXd gram = dF.transpose() * dF;
+      const Eigen::VectorXd projection = dF.transpose() * work.Residual;
+      const Eigen::VectorXd theta = gram.completeOrthogonalDecomposition().solve(projection);
+      Eigen::Map<Eigen::VectorXd>(next.data(), this->Length).noalias() -=
+        work.GDifferences.leftCols(this->Stored) * theta;
+    }
+    work.PreviousG = gFlat;
+    work.PreviousF = work.Residual;
+    this->HasPrevious = true;
+    return accelerated;
+  }
+
+  // Forgets the differences (after a step the safeguard rejected).
+  void Restart()
+  {
+    this->Stored = 0;
+    this->Newest = -1;
+  }
+
+private:
+  int Size;
+  Eigen::Index Length;
+  int Stored = 0;
+  int Newest = -1;
+  bool HasPrevious = false;
+};
 }
 
 std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRegion& region,
   const DeformationOptions& options, const ParallelFor& loop)
 {
-  const int n = region.GetNumberOfVertices();
-  this->NumberOfROIVertices = n;
+  this->NumberOfROIVertices = region.GetNumberOfVertices();
   this->HandleGroups = region.HandleGroups;
+  std::vector<int> patchRow;
+  const std::vector<int> patchVertices = this->GrowPatch(mesh, region, patchRow);
+  this->WeighEdges(mesh, patchVertices, patchRow, options.Weights, loop);
+  this->FindRotationsAroundHandles();
+  const std::string error = this->ChooseUnknowns(region);
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (this->FreeRows.empty())
+  {
+    return {};
+  }
+  return this->Factor.Factorize(this->AssembleFreeLaplacian(loop), options.Backend,
+    options.Ordering, options.MaximumFactorBytes, 1, options.Distributed);
+}
+
+std::vector<int> AsRigidAsPossibleSolver::GrowPatch(
+  const SurfaceMesh& mesh, const EditRegion& region, std::vector<int>& patchRow)
+{
   // The patch: the ROI, its ring (the rest of the energy vertices), and the ring's ring.
+  const int n = region.GetNumberOfVertices();
   std::vector<int> patchVertices = region.Vertices;
-  std::vector<int> patchRow(mesh.GetNumberOfVertices(), -1);
+  patchRow.assign(mesh.GetNumberOfVertices(), -1);
   for (int k = 0; k < n; ++k)
   {
     patchRow[region.Vertices[k]] = k;
@@ -53,11 +132,18 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   {
     this->RestPatch.row(k) = mesh.GetPositions()[patchVertices[k]].transpose();
   }
+  return patchVertices;
+}
 
+void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
+  const std::vector<int>& patchVertices, const std::vector<int>& patchRow, LaplacianWeights type,
+  const ParallelFor& loop)
+{
   // Symmetric weights: each edge's two one-sided weights averaged. The arrays are sized first
   // and filled in parallel: grown piecemeal, they took a third of the setup, mostly in page
   // faults.
-  const LaplacianOperator laplacian(mesh, options.Weights);
+  const LaplacianOperator laplacian(mesh, type);
+  const int patchSize = static_cast<int>(patchVertices.size());
   std::vector<int> ringStart(patchSize + 1, 0);
   for (int row = 0; row < patchSize; ++row)
   {
@@ -99,6 +185,11 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   {
     this->RestScale += this->Weights[edge] * this->RestEdges[edge].squaredNorm();
   }
+}
+
+void AsRigidAsPossibleSolver::FindRotationsAroundHandles()
+{
+  const int n = this->NumberOfROIVertices;
   auto isHandle = [&](int row) { return row < n && this->HandleGroups[row] >= 0; };
   this->AroundHandles.clear();
   for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
@@ -113,11 +204,14 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
       this->AroundHandles.push_back(i);
     }
   }
+}
 
+std::string AsRigidAsPossibleSolver::ChooseUnknowns(const EditRegion& region)
+{
   // Unknowns: the ROI without its handles.
   this->FreeRows.clear();
-  this->UnknownOfPatch.assign(patchSize, -1);
-  for (int k = 0; k < n; ++k)
+  this->UnknownOfPatch.assign(this->RestPatch.rows(), -1);
+  for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {
     if (region.Roles[k] != VertexRole::Handle)
     {
@@ -159,7 +253,11 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
     return "in the as-rigid-as-possible mode every connected part of the region of interest must "
            "touch a handle or the fixed part: make the ROI smaller than its component";
   }
+  return {};
+}
 
+Eigen::SparseMatrix<double> AsRigidAsPossibleSolver::AssembleFreeLaplacian(const ParallelFor& loop) const
+{
   // The upper triangle, column by column (rows sorted, the diagonal last), assembled in place.
   // Column u holds the unknowns of u's ring that come before u.
   const int free = static_cast<int>(this->FreeRows.size());
@@ -178,9 +276,9 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
     }
     columnStart[u + 1] = columnStart[u] + above + 1;
   }
-  Eigen::SparseMatrix<double> laplacianMatrix(free, free);
-  laplacianMatrix.resizeNonZeros(columnStart[free]);
-  std::copy(columnStart.begin(), columnStart.end(), laplacianMatrix.outerIndexPtr());
+  Eigen::SparseMatrix<double> laplacian(free, free);
+  laplacian.resizeNonZeros(columnStart[free]);
+  std::copy(columnStart.begin(), columnStart.end(), laplacian.outerIndexPtr());
   loop(0, free, [&](int first, int last) {
     std::vector<std::pair<int, double>> column;
     for (int u = first; u < last; ++u)
@@ -201,14 +299,12 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
       column.emplace_back(u, diagonal);
       for (std::size_t e = 0; e < column.size(); ++e)
       {
-        laplacianMatrix.innerIndexPtr()[columnStart[u] + e] = column[e].first;
-        laplacianMatrix.valuePtr()[columnStart[u] + e] = column[e].second;
+        laplacian.innerIndexPtr()[columnStart[u] + e] = column[e].first;
+        laplacian.valuePtr()[columnStart[u] + e] = column[e].second;
       }
     }
   });
-  return free == 0 ? std::string()
-                   : this->Factor.Factorize(laplacianMatrix, options.Backend, options.Ordering,
-                       options.MaximumFactorBytes, 1, options.Distributed);
+  return laplacian;
 }
 
 void AsRigidAsPossibleSolver::Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const
@@ -295,109 +391,38 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   ArapIterate& iterate, const ArapOptions& options, const ParallelFor& loop,
   std::vector<double>* energies) const
 {
-  Positions& roiPositions = iterate.Points;
-  Quaternions& quaternions = iterate.Rotations;
   ArapIterate::Workspace& work = iterate.Work;
   // A solve that continues the last one (its rotations still fit the points) with moved
   // handles may extrapolate; otherwise only the handle rows move between solves, and the first
   // local step redoes only the rotations around the handles (the others would come out the same).
   const bool continues = work.RotationsFitPoints;
-  const bool extrapolate = continues && options.Extrapolate && options.MaximumIterations > 0 &&
-    iterate.Before.rows() == roiPositions.rows() && handleMaps != iterate.BeforeMaps;
-  iterate.BeforeMaps = handleMaps;
-  if (extrapolate)
-  {
-    work.Candidate = roiPositions;
-    roiPositions += roiPositions - iterate.Before;
-    iterate.Before.swap(work.Candidate);
-  }
-  else
-  {
-    iterate.Before = roiPositions;
-  }
+  const bool extrapolate = this->Extrapolate(handleMaps, iterate, options);
   ArapResult result;
   result.Energy = this->LocalStep(handleMaps, iterate, loop, continues && !extrapolate);
-  const int free = static_cast<int>(this->FreeRows.size());
-  auto freeOf = [&](const Positions& roi) {
-    Eigen::MatrixXd x(free, 3);
-    for (int u = 0; u < free; ++u)
-    {
-      x.row(u) = roi.row(this->FreeRows[u]);
-    }
-    return x;
-  };
-  auto setFree = [&](Positions& roi, const Eigen::MatrixXd& x) {
-    for (int u = 0; u < free; ++u)
-    {
-      roi.row(this->FreeRows[u]) = x.row(u);
-    }
-  };
-  std::vector<Eigen::Matrix3d>& rotations = work.Rotations;
-  std::vector<Vector3>& patch = work.Patch;
-  if (free == 0 || options.MaximumIterations <= 0)
+  if (this->FreeRows.empty() || options.MaximumIterations <= 0)
   {
     return result;
   }
   // Anderson acceleration on the fixed point x -> Global(Local(x)), over flattened positions.
-  // The last History differences of g and of the residual f = g - x are the columns of a ring.
-  const int m = std::max(options.History, 1);
-  const Eigen::Index size = 3 * static_cast<Eigen::Index>(free);
-  work.GDifferences.resize(size, m);
-  work.FDifferences.resize(size, m);
-  int stored = 0, newest = -1;
-  bool hasPrevious = false;
-  Eigen::MatrixXd x = freeOf(roiPositions);
-  Eigen::MatrixXd next(free, 3);
+  AndersonRing ring(std::max(options.History, 1), 3 * static_cast<Eigen::Index>(this->FreeRows.size()), work);
+  Eigen::MatrixXd x = this->FreePositions(iterate.Points);
+  Eigen::MatrixXd next(this->FreeRows.size(), 3);
   for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
   {
-    const Eigen::MatrixXd g = this->Global(rotations, patch, work, loop);
-    const auto gFlat = Eigen::Map<const Eigen::VectorXd>(g.data(), size);
-    work.Residual = gFlat - Eigen::Map<const Eigen::VectorXd>(x.data(), size);
-    next = g;
-    const bool accelerated = options.Accelerate && hasPrevious;
-    if (accelerated)
-    {
-      newest = (newest + 1) % m;
-      stored = std::min(stored + 1, m);
-      work.GDifferences.col(newest) = gFlat - work.PreviousG;
-      work.FDifferences.col(newest) = work.Residual - work.PreviousF;
-      // The mixing weights minimize |f - dF theta|: with at most History columns, through the
-      // small Gram matrix (a QR of the tall dF took 20-35 ms at 30k vertices, this < 1 ms); a
-      // rank-revealing solve keeps nearly dependent differences harmless.
-      const auto dF = work.FDifferences.leftCols(stored);
-      const Eigen::MatrixXd gram = dF.transpose() * dF;
-      const Eigen::VectorXd projection = dF.transpose() * work.Residual;
-      const Eigen::VectorXd theta = gram.completeOrthogonalDecomposition().solve(projection);
-      Eigen::Map<Eigen::VectorXd>(next.data(), size).noalias() -=
-        work.GDifferences.leftCols(stored) * theta;
-    }
-    work.PreviousG = gFlat;
-    work.PreviousF = work.Residual;
-    hasPrevious = true;
-
-    Positions& candidate = work.Candidate;
-    candidate = roiPositions;
-    setFree(candidate, next);
-    std::vector<Eigen::Matrix3d>& candidateRotations = work.CandidateRotations;
-    Quaternions& candidateQuaternions = work.CandidateQuaternions;
-    candidateQuaternions = quaternions;
-    this->Patch(candidate, patch);
-    double energy = this->Rotate(patch, candidateRotations, candidateQuaternions, work, loop);
+    const Eigen::MatrixXd g = this->Global(work.Rotations, work.Patch, work, loop);
+    const bool accelerated = ring.Mix(g, x, options.Accelerate, work, next);
+    double energy = this->Evaluate(next, iterate, loop);
     if (energy > result.Energy && accelerated)
     {
       // The accelerated iterate did not lower the energy: take the plain one, start over.
       next = g;
-      setFree(candidate, next);
-      candidateQuaternions = quaternions;
-      this->Patch(candidate, patch);
-      energy = this->Rotate(patch, candidateRotations, candidateQuaternions, work, loop);
-      stored = 0;
-      newest = -1;
+      energy = this->Evaluate(next, iterate, loop);
+      ring.Restart();
     }
     const double decrease = result.Energy - energy;
-    roiPositions.swap(candidate);
-    rotations.swap(candidateRotations);
-    quaternions.swap(candidateQuaternions);
+    iterate.Points.swap(work.Candidate);
+    work.Rotations.swap(work.CandidateRotations);
+    iterate.Rotations.swap(work.CandidateQuaternions);
     x = next;
     result.Energy = energy;
     ++result.Iterations;
@@ -416,6 +441,52 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     }
   }
   return result;
+}
+
+bool AsRigidAsPossibleSolver::Extrapolate(
+  const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ArapOptions& options) const
+{
+  Positions& points = iterate.Points;
+  const bool extrapolate = iterate.Work.RotationsFitPoints && options.Extrapolate &&
+    options.MaximumIterations > 0 && iterate.Before.rows() == points.rows() &&
+    handleMaps != iterate.BeforeMaps;
+  iterate.BeforeMaps = handleMaps;
+  if (extrapolate)
+  {
+    iterate.Work.Candidate = points;
+    points += points - iterate.Before;
+    iterate.Before.swap(iterate.Work.Candidate);
+  }
+  else
+  {
+    iterate.Before = points;
+  }
+  return extrapolate;
+}
+
+Eigen::MatrixXd AsRigidAsPossibleSolver::FreePositions(const Positions& roi) const
+{
+  Eigen::MatrixXd x(this->FreeRows.size(), 3);
+  for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
+  {
+    x.row(u) = roi.row(this->FreeRows[u]);
+  }
+  return x;
+}
+
+double AsRigidAsPossibleSolver::Evaluate(
+  const Eigen::MatrixXd& free, ArapIterate& iterate, const ParallelFor& loop) const
+{
+  ArapIterate::Workspace& work = iterate.Work;
+  Positions& candidate = work.Candidate;
+  candidate = iterate.Points;
+  for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
+  {
+    candidate.row(this->FreeRows[u]) = free.row(u);
+  }
+  work.CandidateQuaternions = iterate.Rotations;
+  this->Patch(candidate, work.Patch);
+  return this->Rotate(work.Patch, work.CandidateRotations, work.CandidateQuaternions, work, loop);
 }
 
 ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const

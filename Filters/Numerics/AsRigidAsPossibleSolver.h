@@ -120,6 +120,22 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
+  // Build's steps: the patch (returns its vertices, with each mesh vertex's patch row or -1),
+  // the edges' symmetric weights and rest vectors, the rotations a handle move changes, the
+  // unknowns (an error if a part of them touches no known value), and L_ff's upper triangle.
+  std::vector<int> GrowPatch(const SurfaceMesh& mesh, const EditRegion& region, std::vector<int>& patchRow);
+  void WeighEdges(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
+    const std::vector<int>& patchRow, LaplacianWeights type, const ParallelFor& loop);
+  void FindRotationsAroundHandles();
+  std::string ChooseUnknowns(const EditRegion& region);
+  Eigen::SparseMatrix<double> AssembleFreeLaplacian(const ParallelFor& loop) const;
+  // Solve's steps: the extrapolated start (returns whether it extrapolated), the free rows of
+  // ROI positions, and a candidate iterate's local step (the iterate with `free` in its free
+  // rows, into the workspace's candidate; returns its energy).
+  bool Extrapolate(
+    const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ArapOptions& options) const;
+  Eigen::MatrixXd FreePositions(const Positions& roi) const;
+  double Evaluate(const Eigen::MatrixXd& free, ArapIterate& iterate, const ParallelFor& loop) const;
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
   void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by

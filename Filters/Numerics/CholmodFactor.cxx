@@ -199,6 +199,105 @@ void UseHugePagesForLargeBlocks()
   });
 #endif
 }
+// The supernodal elimination tree, with each supernode's share of a solve's work (its entries).
+struct SupernodeTree
+{
+  std::vector<int> Parent;
+  std::vector<std::vector<int>> Children;
+  std::vector<int> Roots;
+  std::vector<double> Work;
+  std::vector<double> SubtreeWork;
+  double TotalWork = 0.0;
+  // Whether every supernode's rows are sorted (the schedule needs them so).
+  bool Sorted = true;
+
+  SupernodeTree(std::size_t count, const int* super, const int* pi, const int* rows)
+    : Parent(count, -1)
+    , Children(count)
+    , Work(count)
+    , SubtreeWork(count, 0.0)
+  {
+    const int supernodes = static_cast<int>(count);
+    std::vector<int> supernodeOfColumn(super[supernodes]);
+    for (int s = 0; s < supernodes; ++s)
+    {
+      std::fill(supernodeOfColumn.begin() + super[s], supernodeOfColumn.begin() + super[s + 1], s);
+    }
+    for (int s = 0; s < supernodes; ++s)
+    {
+      const double columns = super[s + 1] - super[s];
+      const double height = pi[s + 1] - pi[s];
+      this->Work[s] = columns * height - columns * (columns - 1.0) / 2.0;
+      this->TotalWork += this->Work[s];
+      this->SubtreeWork[s] += this->Work[s];
+      for (int k = pi[s] + 1; k < pi[s + 1]; ++k)
+      {
+        this->Sorted = this->Sorted && rows[k - 1] < rows[k];
+      }
+      if (height > columns)
+      {
+        // The first row below the diagonal block is the elimination tree's parent; parents come
+        // after their children, so subtree sums are complete when they are read.
+        this->Parent[s] = supernodeOfColumn[rows[pi[s] + static_cast<int>(columns)]];
+        this->SubtreeWork[this->Parent[s]] += this->SubtreeWork[s];
+        this->Children[this->Parent[s]].push_back(s);
+      }
+      else
+      {
+        this->Roots.push_back(s);
+      }
+    }
+  }
+
+  // Deals `subtrees`, heaviest first, to the least loaded of `parts` bins (into `binOf` if
+  // given); returns the heaviest bin's load.
+  double Assign(std::vector<int>& subtrees, int parts, std::vector<int>* binOf) const
+  {
+    std::sort(subtrees.begin(), subtrees.end(),
+      [&](int a, int b) { return this->SubtreeWork[a] > this->SubtreeWork[b]; });
+    std::vector<double> load(parts, 0.0);
+    for (int subtree : subtrees)
+    {
+      const int bin = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+      load[bin] += this->SubtreeWork[subtree];
+      if (binOf)
+      {
+        (*binOf)[subtree] = bin;
+      }
+    }
+    return *std::max_element(load.begin(), load.end());
+  }
+
+  // Splits the heaviest subtree until the estimated time, serial top plus the heaviest part,
+  // stops improving; each split moves one separator to the top.
+  void Split(int parts, std::vector<int>& bestSubtrees, std::vector<int>& bestTop) const
+  {
+    std::vector<int> candidates = this->Roots, top;
+    bestSubtrees = this->Roots;
+    bestTop.clear();
+    double topWork = 0.0, bestCost = std::numeric_limits<double>::infinity();
+    while (!candidates.empty() && candidates.size() <= static_cast<size_t>(64 * parts))
+    {
+      const double cost = topWork + this->Assign(candidates, parts, nullptr);
+      if (cost < bestCost)
+      {
+        bestCost = cost;
+        bestSubtrees = candidates;
+        bestTop = top;
+      }
+      const int heaviest = candidates.front();
+      if (this->Children[heaviest].empty())
+      {
+        break;
+      }
+      candidates.erase(candidates.begin());
+      candidates.insert(
+        candidates.end(), this->Children[heaviest].begin(), this->Children[heaviest].end());
+      top.push_back(heaviest);
+      topWork += this->Work[heaviest];
+    }
+  }
+};
 }
 
 struct CholmodFactor::Internals
@@ -232,7 +331,9 @@ struct CholmodFactor::Internals
   const int* Rows() const { return static_cast<const int*>(this->Factor->s); }
   const double* Values() const { return static_cast<const double*>(this->Factor->x); }
 
+  // The parts and the top of the schedule, for `parts` threads.
   void Schedule(int parts);
+  void Place(const SupernodeTree& tree, int parts, std::vector<int>& subtrees, const std::vector<int>& top);
 
   template <int C>
   void Forward(int s, double* y, double* spill) const;
@@ -244,104 +345,38 @@ struct CholmodFactor::Internals
 
 void CholmodFactor::Internals::Schedule(int parts)
 {
-  const int supernodes = static_cast<int>(this->Factor->nsuper);
-  const int n = static_cast<int>(this->Factor->n);
+  const SupernodeTree tree(this->Factor->nsuper, this->Super(), this->RowPointers(), this->Rows());
+  std::vector<int> subtrees, top;
+  if (tree.Sorted && parts > 1)
+  {
+    tree.Split(parts, subtrees, top);
+  }
+  else
+  {
+    top.resize(tree.Parent.size());
+    std::iota(top.begin(), top.end(), 0);
+  }
+  this->Place(tree, parts, subtrees, top);
+}
+
+void CholmodFactor::Internals::Place(
+  const SupernodeTree& tree, int parts, std::vector<int>& subtrees, const std::vector<int>& top)
+{
+  // Each supernode joins its subtree's part, or the top.
+  const int supernodes = static_cast<int>(tree.Parent.size());
   const int* super = this->Super();
   const int* pi = this->RowPointers();
   const int* rows = this->Rows();
-
-  std::vector<int> supernodeOfColumn(n);
-  std::vector<int> parent(supernodes, -1);
-  std::vector<double> work(supernodes), subtreeWork(supernodes, 0.0);
-  std::vector<std::vector<int>> children(supernodes);
-  bool sorted = true;
-  for (int s = 0; s < supernodes; ++s)
-  {
-    std::fill(supernodeOfColumn.begin() + super[s], supernodeOfColumn.begin() + super[s + 1], s);
-  }
-  std::vector<int> roots;
-  double total = 0.0;
-  for (int s = 0; s < supernodes; ++s)
-  {
-    const double columns = super[s + 1] - super[s];
-    const double height = pi[s + 1] - pi[s];
-    work[s] = columns * height - columns * (columns - 1.0) / 2.0;
-    total += work[s];
-    subtreeWork[s] += work[s];
-    for (int k = pi[s] + 1; k < pi[s + 1]; ++k)
-    {
-      sorted = sorted && rows[k - 1] < rows[k];
-    }
-    if (height > columns)
-    {
-      // The first row below the diagonal block is the elimination tree's parent; parents come
-      // after their children, so subtree sums are complete when they are read.
-      parent[s] = supernodeOfColumn[rows[pi[s] + static_cast<int>(columns)]];
-      subtreeWork[parent[s]] += subtreeWork[s];
-      children[parent[s]].push_back(s);
-    }
-    else
-    {
-      roots.push_back(s);
-    }
-  }
-
-  // Split the heaviest subtree until the estimated time, serial top plus the heaviest part, stops
-  // improving; each split moves one separator to the top.
-  auto byWork = [&](int a, int b) { return subtreeWork[a] > subtreeWork[b]; };
-  auto assign = [&](std::vector<int>& subtrees, std::vector<int>* binOf) {
-    std::sort(subtrees.begin(), subtrees.end(), byWork);
-    std::vector<double> load(parts, 0.0);
-    for (int subtree : subtrees)
-    {
-      const int bin = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-      load[bin] += subtreeWork[subtree];
-      if (binOf)
-      {
-        (*binOf)[subtree] = bin;
-      }
-    }
-    return *std::max_element(load.begin(), load.end());
-  };
-  std::vector<int> candidates = roots, top, bestCandidates = roots, bestTop;
-  double topWork = 0.0, bestCost = std::numeric_limits<double>::infinity();
-  while (sorted && parts > 1 && !candidates.empty() &&
-    candidates.size() <= static_cast<size_t>(64 * parts))
-  {
-    const double cost = topWork + assign(candidates, nullptr);
-    if (cost < bestCost)
-    {
-      bestCost = cost;
-      bestCandidates = candidates;
-      bestTop = top;
-    }
-    const int heaviest = candidates.front();
-    if (children[heaviest].empty())
-    {
-      break;
-    }
-    candidates.erase(candidates.begin());
-    candidates.insert(candidates.end(), children[heaviest].begin(), children[heaviest].end());
-    top.push_back(heaviest);
-    topWork += work[heaviest];
-  }
-
   this->Parts.assign(std::max(parts, 1), {});
   this->DirectRowsEnd.assign(supernodes, 0);
-  this->TopSlot.assign(n, -1);
+  this->TopSlot.assign(this->Factor->n, -1);
   this->TopColumns.clear();
   this->Top.clear();
   this->ParallelShare = 0.0;
-  if (!sorted || parts <= 1)
-  {
-    bestCandidates.clear();
-    bestTop.assign(supernodes, 0);
-    std::iota(bestTop.begin(), bestTop.end(), 0);
-  }
   std::vector<int> binOf(supernodes, -1), subtreeRoot(supernodes, -1);
-  assign(bestCandidates, &binOf);
+  tree.Assign(subtrees, parts, &binOf);
   std::vector<char> isTop(supernodes, 0);
-  for (int s : bestTop)
+  for (int s : top)
   {
     isTop[s] = 1;
   }
@@ -357,8 +392,8 @@ void CholmodFactor::Internals::Schedule(int parts)
     }
     else
     {
-      binOf[s] = binOf[parent[s]];
-      subtreeRoot[s] = subtreeRoot[parent[s]];
+      binOf[s] = binOf[tree.Parent[s]];
+      subtreeRoot[s] = subtreeRoot[tree.Parent[s]];
     }
   }
   for (int s = 0; s < supernodes; ++s)
@@ -384,7 +419,7 @@ void CholmodFactor::Internals::Schedule(int parts)
         ++end;
       }
       this->Parts[binOf[s]].push_back(s);
-      this->ParallelShare += work[s] / total;
+      this->ParallelShare += tree.Work[s] / tree.TotalWork;
     }
     this->DirectRowsEnd[s] = end;
   }

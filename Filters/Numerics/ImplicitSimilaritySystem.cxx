@@ -193,27 +193,19 @@ void RingFits::Fit(int row, bool allowScaling)
   this->Fits[row].bottomRows<3>() = fit;
   this->FitOffsets[row] << 1.0, -fit * fitMatrix.col(0);
 }
-}
 
-std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
-  const DeformationSystem& plain, const DeformationOptions& options,
-  const ImplicitFormulation& formulation, const ParallelFor& loop)
+// The one-rings of the ROI vertices (each vertex first, then its neighbours) and their fits.
+RingFits FitRings(
+  const SurfaceMesh& mesh, const EditRegion& region, bool allowScaling, const ParallelFor& loop)
 {
-  const LaplacianOperator edgeWeights(mesh, options.Weights);
   const int n = region.GetNumberOfVertices();
-  this->NumberOfVertices = n;
-  const Positions& restDelta = plain.GetRestDifferentialCoordinates();
-  const auto& positions = mesh.GetPositions();
   std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);
   for (int row = 0; row < n; ++row)
   {
     roiRow[region.Vertices[row]] = row;
   }
-
-  // Rings and fits.
   RingFits rings;
   rings.Offsets.assign(1, 0);
-  rings.RoiRows.clear();
   std::vector<int> ringVertices;
   for (int row = 0; row < n; ++row)
   {
@@ -226,81 +218,118 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   for (std::size_t k = 0; k < ringVertices.size(); ++k)
   {
     rings.RoiRows.push_back(roiRow[ringVertices[k]]);
-    rings.Rest.row(k) = positions[ringVertices[k]].transpose();
+    rings.Rest.row(k) = mesh.GetPositions()[ringVertices[k]].transpose();
   }
   rings.Fits.resize(n);
   rings.FitOffsets.resize(n);
   loop(0, n, [&](int first, int last) {
     for (int row = first; row < last; ++row)
     {
-      rings.Fit(row, formulation.AllowScaling);
+      rings.Fit(row, allowScaling);
     }
   });
+  return rings;
+}
 
-  // The residual rows: per vertex (the paper's, Eq. 12) or per one-ring edge. All rows of ROI
-  // vertex `row` act on its ring (and, in the paper's form, on its operator row), so each
-  // vertex contributes a small dense block J^T J to the normal matrix, accumulated directly:
-  // forming A and A^T A as sparse products took half the setup and most of its memory.
-  // Each row is sum_c a_c v'_c - T_i(V') e = k with T_i(V') e = G(e) (Fits ring + offset).
-  const auto& laplacian = plain.GetRegionOperator();
-  std::vector<std::vector<int>> residualColumns(n);
-  for (int row = 0; row < n; ++row)
+// The residual rows, per vertex (the paper's, Eq. 12) or per one-ring edge. All rows of ROI
+// vertex `row` act on its ring (and, in the paper's form, on its operator row), so each vertex
+// contributes a small dense block J^T J to the normal matrix, accumulated directly: forming A
+// and A^T A as sparse products took half the setup and most of its memory. Each row is
+// sum_c a_c v'_c - T_i(V') e = k with T_i(V') e = G(e) (Fits ring + offset).
+class ResidualRows
+{
+public:
+  ResidualRows(const SurfaceMesh& mesh, const EditRegion& region, const DeformationSystem& plain,
+    const RingFits& rings, const ImplicitFormulation& formulation, LaplacianWeights weights)
+    : Region(region)
+    , Plain(plain)
+    , Rings(rings)
+    , PerEdge(formulation.PerEdge)
+    , EdgeWeights(mesh, weights)
   {
-    std::vector<int>& columns = residualColumns[row];
-    for (int k = rings.Offsets[row]; k < rings.Offsets[row + 1]; ++k)
-    {
-      if (rings.RoiRows[k] >= 0)
-      {
-        columns.push_back(rings.RoiRows[k]);
-      }
-    }
-    if (!formulation.PerEdge)
-    {
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
-      {
-        columns.push_back(static_cast<int>(it.col()));
-      }
-    }
-    std::sort(columns.begin(), columns.end());
-    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    this->FindColumns();
   }
 
-  const Positions& fixedPart = plain.GetFixedPart();
-  auto fillRows = [&](int row, VertexRows& rows) {
-    const int begin = rings.Offsets[row];
-    const int size = rings.Offsets[row + 1] - begin;
-    auto addTransformTerm = [&](int equation, const Eigen::Vector3d& e, double scale) {
-      const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
-      const Eigen::MatrixXd transform = apply * rings.Fits[row];
-      rows.Known.segment<3>(equation) += scale * apply * rings.FitOffsets[row];
-      for (int q = 0; q < size; ++q)
-      {
-        const int member = rings.RoiRows[begin + q];
-        const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
-        if (member < 0)
+  /// Per ROI vertex, the ROI vertices its rows act on, sorted.
+  const std::vector<std::vector<int>>& GetColumns() const { return this->Columns; }
+
+  /// Adds every vertex's J^T J and J^T k: the products in parallel, a batch at a time; summing
+  /// them is serial.
+  void Accumulate(BlockNormalEquations& normal, const ParallelFor& loop) const
+  {
+    const int n = this->Region.GetNumberOfVertices();
+    constexpr int batch = 2048;
+    std::vector<Eigen::MatrixXd> products(std::min(n, batch));
+    std::vector<Eigen::VectorXd> projections(products.size());
+    for (int batchBegin = 0; batchBegin < n; batchBegin += batch)
+    {
+      const int batchEnd = std::min(n, batchBegin + batch);
+      loop(batchBegin, batchEnd, [&](int first, int last) {
+        VertexRows rows;
+        for (int row = first; row < last; ++row)
         {
-          rows.Known.segment<3>(equation) += block * rings.Rest.row(begin + q).transpose();
-          continue;
+          this->Fill(row, rows);
+          products[row - batchBegin].noalias() = rows.Jacobian.transpose() * rows.Jacobian;
+          projections[row - batchBegin].noalias() = rows.Jacobian.transpose() * rows.Known;
         }
-        rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)) -= block;
+      });
+      for (int row = batchBegin; row < batchEnd; ++row)
+      {
+        normal.Add(this->Columns[row], products[row - batchBegin], projections[row - batchBegin]);
       }
-    };
-    if (!formulation.PerEdge)
+    }
+  }
+
+private:
+  void FindColumns()
+  {
+    const auto& laplacian = this->Plain.GetRegionOperator();
+    this->Columns.resize(this->Region.GetNumberOfVertices());
+    for (int row = 0; row < this->Region.GetNumberOfVertices(); ++row)
+    {
+      std::vector<int>& columns = this->Columns[row];
+      for (int k = this->Rings.Offsets[row]; k < this->Rings.Offsets[row + 1]; ++k)
+      {
+        if (this->Rings.RoiRows[k] >= 0)
+        {
+          columns.push_back(this->Rings.RoiRows[k]);
+        }
+      }
+      if (!this->PerEdge)
+      {
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
+        {
+          columns.push_back(static_cast<int>(it.col()));
+        }
+      }
+      std::sort(columns.begin(), columns.end());
+      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    }
+  }
+
+  void Fill(int row, VertexRows& rows) const
+  {
+    if (!this->PerEdge)
     {
       // D(V')_i - T_i(V') delta_i = -fixed part.
-      rows.Start(residualColumns[row], 3);
+      rows.Start(this->Columns[row], 3);
+      const auto& laplacian = this->Plain.GetRegionOperator();
       for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(laplacian, row); it; ++it)
       {
         rows.Jacobian.block<3, 3>(0, 3 * rows.Column(static_cast<int>(it.col()))).diagonal().array() +=
           it.value();
       }
-      rows.Known.head<3>() -= fixedPart.row(row).transpose();
-      addTransformTerm(0, restDelta.row(row).transpose(), 1.0);
+      rows.Known.head<3>() -= this->Plain.GetFixedPart().row(row).transpose();
+      this->AddTransformTerm(
+        row, 0, this->Plain.GetRestDifferentialCoordinates().row(row).transpose(), 1.0, rows);
       return;
     }
     // sqrt(w_ij) ((v'_i - v'_j) - T_i(V') (v_i - v_j)) = 0, with the row's weights.
-    rows.Start(residualColumns[row], 3 * (size - 1));
-    const std::vector<double> weights = edgeWeights.EdgeWeights(region.Vertices[row]);
+    const RingFits& rings = this->Rings;
+    const int begin = rings.Offsets[row];
+    const int size = rings.Offsets[row + 1] - begin;
+    rows.Start(this->Columns[row], 3 * (size - 1));
+    const std::vector<double> weights = this->EdgeWeights.EdgeWeights(this->Region.Vertices[row]);
     double total = 0.0;
     for (double w : weights)
     {
@@ -320,45 +349,73 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
       {
         rows.Known.segment<3>(equation) += scale * rings.Rest.row(begin + q).transpose();
       }
-      addTransformTerm(
-        equation, (rings.Rest.row(begin) - rings.Rest.row(begin + q)).transpose(), scale);
-    }
-  };
-
-  // The vertices' products in parallel, a batch at a time; summing them is serial.
-  BlockNormalEquations normal(residualColumns);
-  constexpr int batch = 2048;
-  std::vector<Eigen::MatrixXd> products(std::min(n, batch));
-  std::vector<Eigen::VectorXd> projections(products.size());
-  for (int batchBegin = 0; batchBegin < n; batchBegin += batch)
-  {
-    const int batchEnd = std::min(n, batchBegin + batch);
-    loop(batchBegin, batchEnd, [&](int first, int last) {
-      VertexRows rows;
-      for (int row = first; row < last; ++row)
-      {
-        fillRows(row, rows);
-        products[row - batchBegin].noalias() = rows.Jacobian.transpose() * rows.Jacobian;
-        projections[row - batchBegin].noalias() = rows.Jacobian.transpose() * rows.Known;
-      }
-    });
-    for (int row = batchBegin; row < batchEnd; ++row)
-    {
-      normal.Add(residualColumns[row], products[row - batchBegin], projections[row - batchBegin]);
+      this->AddTransformTerm(
+        row, equation, (rings.Rest.row(begin) - rings.Rest.row(begin + q)).transpose(), scale, rows);
     }
   }
-  const Eigen::SparseMatrix<double> normalMatrix = normal.UpperTriangle(plain.GetSquaredWeights());
-  this->KnownRightHandSide = normal.GetRightHandSide();
-  rings = RingFits(); // not needed by the factorization: its peak is lower without them
+
+  // -scale T_i(V') e in the three rows from `equation`.
+  void AddTransformTerm(
+    int row, int equation, const Eigen::Vector3d& e, double scale, VertexRows& rows) const
+  {
+    const RingFits& rings = this->Rings;
+    const int begin = rings.Offsets[row];
+    const int size = rings.Offsets[row + 1] - begin;
+    const Eigen::Matrix<double, 3, 4> apply = ApplyToDelta(e);
+    const Eigen::MatrixXd transform = apply * rings.Fits[row];
+    rows.Known.segment<3>(equation) += scale * apply * rings.FitOffsets[row];
+    for (int q = 0; q < size; ++q)
+    {
+      const int member = rings.RoiRows[begin + q];
+      const Eigen::Matrix3d block = scale * transform.middleCols<3>(3 * q);
+      if (member < 0)
+      {
+        rows.Known.segment<3>(equation) += block * rings.Rest.row(begin + q).transpose();
+        continue;
+      }
+      rows.Jacobian.block<3, 3>(equation, 3 * rows.Column(member)) -= block;
+    }
+  }
+
+  const EditRegion& Region;
+  const DeformationSystem& Plain;
+  const RingFits& Rings;
+  bool PerEdge;
+  LaplacianOperator EdgeWeights;
+  std::vector<std::vector<int>> Columns;
+};
+}
+
+std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditRegion& region,
+  const DeformationSystem& plain, const DeformationOptions& options,
+  const ImplicitFormulation& formulation, const ParallelFor& loop)
+{
+  this->NumberOfVertices = region.GetNumberOfVertices();
+  Eigen::SparseMatrix<double> normalMatrix;
+  {
+    // The rings and their fits are not needed by the factorization: its peak is lower without.
+    const RingFits rings = FitRings(mesh, region, formulation.AllowScaling, loop);
+    const ResidualRows residuals(mesh, region, plain, rings, formulation, options.Weights);
+    BlockNormalEquations normal(residuals.GetColumns());
+    residuals.Accumulate(normal, loop);
+    normalMatrix = normal.UpperTriangle(plain.GetSquaredWeights());
+    this->KnownRightHandSide = normal.GetRightHandSide();
+  }
   const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
     options.MaximumFactorBytes, /*blockSize=*/3, options.Distributed);
   if (!error.empty())
   {
     return error;
   }
+  this->ComputeResponses(plain);
+  return {};
+}
 
+void ImplicitSimilaritySystem::ComputeResponses(const DeformationSystem& plain)
+{
   // The rest solution and the responses, in one multi-column solve. Column 1 + 12 g + 4 c + j
   // holds the constraint term of entry (c, j) of group g's map.
+  const int n = this->NumberOfVertices;
   const int groups = plain.GetNumberOfHandleGroups();
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(3 * n, 1 + 12 * groups);
   rhs.col(0) = this->KnownRightHandSide +
@@ -384,7 +441,6 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   {
     this->GroupResponses[g] = solution.middleCols<12>(1 + 12 * g);
   }
-  return {};
 }
 
 Positions ImplicitSimilaritySystem::Solve(

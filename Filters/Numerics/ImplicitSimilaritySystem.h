@@ -57,6 +57,9 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
+  // The rest solution and the handle groups' responses, from the factor.
+  void ComputeResponses(const DeformationSystem& plain);
+
   int NumberOfVertices = 0;
   SparseCholesky Factor;
   // A^T b of the known parts (fixed vertices): constant per region.

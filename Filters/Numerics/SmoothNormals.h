@@ -42,6 +42,11 @@ public:
   DistanceMethod GetDistanceMethod() const { return this->Method; }
 
 private:
+  // The triangles around the support vertices, whose corners join the extended index (each
+  // mesh vertex's number, -1 where none, and the numbered vertices).
+  void IndexSupportTriangles(
+    const SurfaceMesh& mesh, std::vector<int>& extended, std::vector<int>& extendedVertices);
+
   double Radius = 0.0;
   DistanceMethod Method = DistanceMethod::FastMarching;
   // Rows: samples; columns: support vertices (within the radius of a sample).

@@ -27,6 +27,22 @@
 
 namespace le = LaplacianEditing;
 
+namespace
+{
+// Calls `visit(size, ids)` on each polygon of `input`, in order.
+void VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const vtkIdType*)>& visit)
+{
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    visit(size, ids);
+  }
+}
+}
+
 double vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit()
 {
   // SystemInformation reads the memory figures only when asked to (RunMemoryCheck).
@@ -58,14 +74,9 @@ vtkMTimeType vtkLaplacianSurfaceAdapter::GetContentTime(vtkPolyData* surface)
 vtkIdType vtkLaplacianSurfaceAdapter::FindNearestCorner(vtkPolyData* input, const double point[3])
 {
   std::vector<char> corner(input->GetNumberOfPoints(), 0);
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
     std::for_each(ids, ids + size, [&](vtkIdType id) { corner[id] = 1; });
-  }
+  });
   vtkIdType nearest = -1;
   double nearestDistance = VTK_DOUBLE_MAX;
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
@@ -176,17 +187,13 @@ vtkSmartPointer<vtkPolyData> vtkLaplacianSurfaceAdapter::ExtractReach(
   vtkNew<vtkCellArray> polygons;
   // The polygons are the input's cells after its vertices and lines.
   const vtkIdType firstPolygon = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  vtkIdType polygon = 0;
+  vtkIdType polygon = -1;
   std::vector<vtkIdType> corners;
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++polygon)
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    ++polygon;
     if (std::none_of(ids, ids + size, [&](vtkIdType id) { return reached[id] != 0; }))
     {
-      continue;
+      return;
     }
     corners.clear();
     for (vtkIdType c = 0; c < size; ++c)
@@ -200,7 +207,7 @@ vtkSmartPointer<vtkPolyData> vtkLaplacianSurfaceAdapter::ExtractReach(
     }
     polygons->InsertNextCell(size, corners.data());
     originalCells->InsertNextValue(firstPolygon + polygon);
-  }
+  });
   auto part = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
@@ -265,12 +272,46 @@ std::string vtkLaplacianSurfaceAdapter::Build(
   vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach)
 {
   this->Mesh.reset();
-  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
-  this->NumberOfInputPoints = numberOfPoints;
+  this->NumberOfInputPoints = input->GetNumberOfPoints();
+  std::vector<char> mark;
+  std::string error = MarkReach(input, reach, mark);
+  if (!error.empty())
+  {
+    return error;
+  }
+  MarkRing(input, mergeCoincidentPoints && reach.Margin >= 0.0, mark);
+  this->KeepMarkedPolygons(input, mark);
+  if (this->InputPoints.empty())
+  {
+    return "No polygon lies within reach of the handle.";
+  }
+  error = this->ChooseFrame(input);
+  if (!error.empty())
+  {
+    return error;
+  }
+  std::vector<le::Vector3> points(this->InputPoints.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    points[i] = this->Normalize(input->GetPoint(this->InputPoints[i]));
+  }
+  auto mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
+    points, this->Offsets, this->Connectivity, mergeCoincidentPoints));
+  if (mesh->GetNumberOfTriangles() == 0)
+  {
+    return "The input polygons are all degenerate: no triangle has three distinct corners.";
+  }
+  this->Mesh = std::move(mesh);
+  return {};
+}
+
+std::string vtkLaplacianSurfaceAdapter::MarkReach(
+  vtkPolyData* input, const Reach& reach, std::vector<char>& mark)
+{
   // One pass over the points: their coordinates, and which lie in reach (1).
-  std::vector<char> mark(numberOfPoints, 0);
+  mark.assign(input->GetNumberOfPoints(), 0);
   const ReachTest inReach(reach);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
     const double* p = input->GetPoint(i);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
@@ -279,21 +320,17 @@ std::string vtkLaplacianSurfaceAdapter::Build(
     }
     mark[i] = inReach(p);
   }
-  // Two passes over the polygons: those with a corner in reach mark their other corners (2),
-  // then every polygon with a marked corner is kept, so the ring of fixed vertices around the
-  // region keeps its whole one-ring.
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  auto visitPolygons = [&](const std::function<void(vtkIdType, const vtkIdType*)>& visit) {
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      cells->GetCurrentCell(size, ids);
-      visit(size, ids);
-    }
-  };
+  return {};
+}
+
+void vtkLaplacianSurfaceAdapter::MarkRing(
+  vtkPolyData* input, bool mergeCopies, std::vector<char>& mark)
+{
+  // Polygons with a corner in reach mark their other corners (2), so that the ring of fixed
+  // vertices around the region keeps its whole one-ring once every polygon with a marked corner
+  // is kept.
   std::vector<vtkIdType> ring;
-  visitPolygons([&](vtkIdType size, const vtkIdType* ids) {
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
     if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] == 1; }))
     {
       std::for_each(ids, ids + size, [&](vtkIdType id) {
@@ -305,37 +342,43 @@ std::string vtkLaplacianSurfaceAdapter::Build(
       });
     }
   });
-  if (mergeCoincidentPoints && reach.Margin >= 0.0 && !ring.empty())
+  if (!mergeCopies || ring.empty())
   {
-    // The ring's points that coincide with another point are that point too (a seam, a
-    // triangle soup): mark their copies, so that the ring keeps its whole one-ring. The
-    // tolerance, relative to the whole input, is at least the mesh's, relative to the part kept.
-    double bounds[6];
-    input->GetPoints()->GetBounds(bounds);
-    const le::Vector3 low(bounds[0], bounds[2], bounds[4]);
-    const double diagonal = (le::Vector3(bounds[1], bounds[3], bounds[5]) - low).norm();
-    le::CoincidentPoints copies(le::CoincidentPoints::RelativeTolerance * diagonal, low);
-    for (vtkIdType id : ring)
-    {
-      copies.Add(le::Vector3(input->GetPoint(id)), 0);
-    }
-    for (vtkIdType i = 0; i < numberOfPoints; ++i)
-    {
-      mark[i] = mark[i] ? mark[i] : (copies.Find(le::Vector3(input->GetPoint(i))) == 0 ? 2 : 0);
-    }
+    return;
   }
+  // The ring's points that coincide with another point are that point too (a seam, a triangle
+  // soup): mark their copies, so that the ring keeps its whole one-ring. The tolerance, relative
+  // to the whole input, is at least the mesh's, relative to the part kept.
+  double bounds[6];
+  input->GetPoints()->GetBounds(bounds);
+  const le::Vector3 low(bounds[0], bounds[2], bounds[4]);
+  const double diagonal = (le::Vector3(bounds[1], bounds[3], bounds[5]) - low).norm();
+  le::CoincidentPoints copies(le::CoincidentPoints::RelativeTolerance * diagonal, low);
+  for (vtkIdType id : ring)
+  {
+    copies.Add(le::Vector3(input->GetPoint(id)), 0);
+  }
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    mark[i] = mark[i] ? mark[i] : (copies.Find(le::Vector3(input->GetPoint(i))) == 0 ? 2 : 0);
+  }
+}
+
+void vtkLaplacianSurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark)
+{
   std::unordered_map<vtkIdType, std::int64_t> pointOfInput;
   this->InputPoints.clear();
   this->InputPolygons.clear();
   this->Offsets.assign(1, 0);
   this->Connectivity.clear();
   vtkIdType polygon = 0;
-  visitPolygons([&](vtkIdType size, const vtkIdType* ids) {
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
     if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] != 0; }))
     {
       for (vtkIdType c = 0; c < size; ++c)
       {
-        const auto inserted = pointOfInput.emplace(ids[c], static_cast<std::int64_t>(this->InputPoints.size()));
+        const auto inserted =
+          pointOfInput.emplace(ids[c], static_cast<std::int64_t>(this->InputPoints.size()));
         if (inserted.second)
         {
           this->InputPoints.push_back(ids[c]);
@@ -349,7 +392,7 @@ std::string vtkLaplacianSurfaceAdapter::Build(
   });
   // Points in reach that no polygon uses stay, as isolated vertices, so that the core can say
   // what it thinks of them (a labelled one is refused).
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
     if (mark[i] == 1 && !pointOfInput.count(i))
     {
@@ -357,11 +400,11 @@ std::string vtkLaplacianSurfaceAdapter::Build(
       this->InputPoints.push_back(i);
     }
   }
-  if (this->InputPoints.empty())
-  {
-    return "No polygon lies within reach of the handle.";
-  }
+}
 
+std::string vtkLaplacianSurfaceAdapter::ChooseFrame(vtkPolyData* input)
+{
+  // The core's frame: centred on the kept points' bounding box, scaled to a unit diagonal.
   double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
     VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
   for (vtkIdType id : this->InputPoints)
@@ -382,19 +425,6 @@ std::string vtkLaplacianSurfaceAdapter::Build(
     return "All input points coincide: there is no surface to edit.";
   }
   this->Scale = 1.0 / diagonal;
-
-  std::vector<le::Vector3> points(this->InputPoints.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    points[i] = this->Normalize(input->GetPoint(this->InputPoints[i]));
-  }
-  auto mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
-    points, this->Offsets, this->Connectivity, mergeCoincidentPoints));
-  if (mesh->GetNumberOfTriangles() == 0)
-  {
-    return "The input polygons are all degenerate: no triangle has three distinct corners.";
-  }
-  this->Mesh = std::move(mesh);
   return {};
 }
 
@@ -403,15 +433,10 @@ void vtkLaplacianSurfaceAdapter::GetPolygons(
 {
   offsets.assign(1, 0);
   connectivity.clear();
-  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
-  {
-    vtkIdType size;
-    const vtkIdType* ids;
-    cells->GetCurrentCell(size, ids);
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
     connectivity.insert(connectivity.end(), ids, ids + size);
     offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-  }
+  });
 }
 
 le::Vector3 vtkLaplacianSurfaceAdapter::Normalize(const double p[3]) const

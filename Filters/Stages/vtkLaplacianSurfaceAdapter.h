@@ -108,6 +108,14 @@ public:
   static vtkSmartPointer<vtkSignedCharArray> NewRoles(vtkIdType count);
 
 private:
+  // Build's steps: the points in reach (1; an error for a non-finite coordinate), the ring of
+  // points around them (2, with their coincident copies when merging), the polygons with a
+  // marked corner and their points, and the core's frame (an error if the points coincide).
+  static std::string MarkReach(vtkPolyData* input, const Reach& reach, std::vector<char>& mark);
+  static void MarkRing(vtkPolyData* input, bool mergeCopies, std::vector<char>& mark);
+  void KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark);
+  std::string ChooseFrame(vtkPolyData* input);
+
   std::shared_ptr<LaplacianEditing::SurfaceMesh> Mesh;
   // What the graph was built from (Update): content time, merge flag, reach.
   vtkMTimeType BuiltTime = 0;
