@@ -70,6 +70,11 @@ double SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+const char* EnumName(int value, std::initializer_list<const char*> names)
+{
+  return value >= 0 && value < static_cast<int>(names.size()) ? names.begin()[value] : "?";
+}
 }
 
 // The stages of an edit, in the order RequestData runs them.
@@ -560,20 +565,24 @@ int vtkLaplacianDeformationFilter::GetNumberOfHandleGroups()
 
 void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
-  // Enums by name, then the facts of the last update.
-  auto name = [](int value, std::initializer_list<const char*> names) {
-    return value >= 0 && value < static_cast<int>(names.size()) ? names.begin()[value] : "?";
-  };
+  this->Superclass::PrintSelf(os, indent);
+  this->PrintRegionProperties(os, indent);
+  this->PrintSolverProperties(os, indent);
+  os << indent << "Last update:\n";
+  this->PrintLastUpdate(os, indent.GetNextIndent());
+}
+
+void vtkLaplacianDeformationFilter::PrintRegionProperties(ostream& os, vtkIndent indent)
+{
   auto printVector = [&](const char* label, const double v[3]) {
     os << indent << label << ": (" << v[0] << ", " << v[1] << ", " << v[2] << ")\n";
   };
-  this->Superclass::PrintSelf(os, indent);
-  os << indent << "SelectionMode: " << name(this->SelectionMode, { "Geodesic", "Array" }) << "\n";
+  os << indent << "SelectionMode: " << EnumName(this->SelectionMode, { "Geodesic", "Array" }) << "\n";
   os << indent << "Selection input: "
      << (this->GetNumberOfInputConnections(1) > 0 ? "connected" : "none")
      << "\n";
   os << indent << "RadiusUnits: "
-     << name(this->RadiusUnits, { "Absolute", "DiagonalFraction" }) << "\n";
+     << EnumName(this->RadiusUnits, { "Absolute", "DiagonalFraction" }) << "\n";
   printVector("HandleCenter", this->HandleCenter);
   printVector("HandleTranslation", this->HandleTranslation);
   printVector("HandleRotation", this->HandleRotation);
@@ -581,41 +590,47 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ROIRadius: " << this->ROIRadius << "\n";
   os << indent << "AnchorPadding: " << this->AnchorPadding << "\n";
   os << indent << "DistanceMethod: "
-     << name(this->DistanceMethod, { "FastMarching", "EdgePaths" }) << "\n";
+     << EnumName(this->DistanceMethod, { "FastMarching", "EdgePaths" }) << "\n";
+  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
+  this->Internals->Handles.PrintSelf(os, indent);
+  os << indent << "NumberOfCommits: " << this->Internals->Rest.GetNumberOfCommits() << "\n";
+}
+
+void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent indent)
+{
   os << indent << "HandleWeight: " << this->HandleWeight << "\n";
   os << indent << "AnchorWeight: " << this->AnchorWeight << "\n";
   os << indent << "LaplacianWeights: "
-     << name(this->LaplacianWeights, { "Uniform", "Cotangent" }) << "\n";
+     << EnumName(this->LaplacianWeights, { "Uniform", "Cotangent" }) << "\n";
   os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
   os << indent << "RotationMode: "
-     << name(this->RotationMode, { "None", "Explicit", "Implicit", "AsRigidAsPossible" }) << "\n";
+     << EnumName(this->RotationMode, { "None", "Explicit", "Implicit", "AsRigidAsPossible" }) << "\n";
   os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
   os << indent << "ImplicitFormulation: "
-     << name(this->ImplicitFormulation, { "PerEdge", "Paper" }) << "\n";
+     << EnumName(this->ImplicitFormulation, { "PerEdge", "Paper" }) << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
   os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
   os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";
-  os << indent << "Solver: " << name(this->Solver, { "CHOLMOD", "SimplicialLDLT", "MUMPS" }) << "\n";
+  os << indent << "Solver: " << EnumName(this->Solver, { "CHOLMOD", "SimplicialLDLT", "MUMPS" }) << "\n";
   os << indent << "Ordering: "
-     << name(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
+     << EnumName(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
   os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB";
   if (this->MaximumFactorMemory <= 0.0)
   {
     os << " (automatic: " << vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit() << " MB now)";
   }
   os << "\n";
-  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
   os << indent << "RoleColors: " << (this->RoleColors ? "On" : "Off") << "\n";
-  this->Internals->Handles.PrintSelf(os, indent);
-  os << indent << "NumberOfCommits: " << this->Internals->Rest.GetNumberOfCommits() << "\n";
-  os << indent << "Last update:\n";
-  const vtkIndent next = indent.GetNextIndent();
+}
+
+void vtkLaplacianDeformationFilter::PrintLastUpdate(ostream& os, vtkIndent next)
+{
   os << next << "NumberOfROIVertices: " << this->NumberOfROIVertices << "\n";
   os << next << "NumberOfHandleVertices: " << this->NumberOfHandleVertices << "\n";
   os << next << "TopologyTime: " << this->TopologyTime << " s\n";

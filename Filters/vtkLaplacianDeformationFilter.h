@@ -726,6 +726,10 @@ private:
   vtkLaplacianSolverOptions SolverOptions();
   void UpdateFactorizationCounts();
   void ResetStatistics();
+  // PrintSelf's parts.
+  void PrintRegionProperties(ostream& os, vtkIndent indent);
+  void PrintSolverProperties(ostream& os, vtkIndent indent);
+  void PrintLastUpdate(ostream& os, vtkIndent indent);
   // An error for a non-empty message.
   bool Check(const std::string& error);
   bool Fail(const std::string& message);

@@ -78,6 +78,22 @@ cholmod_sparse ViewUpperTriangle(const Eigen::SparseMatrix<double>& matrix)
   return view;
 }
 
+// A fill-reducing order of the symmetric `pattern` by `method` (a CHOLMOD ordering).
+bool OrderPattern(cholmod_sparse& pattern, int method, cholmod_common& common, std::vector<int>& order)
+{
+  if (method == CHOLMOD_AMD)
+  {
+    return cholmod_amd(&pattern, nullptr, 0, order.data(), &common);
+  }
+  if (method == CHOLMOD_METIS)
+  {
+    return cholmod_metis(&pattern, nullptr, 0, 1, order.data(), &common);
+  }
+  std::vector<int> parents(order.size()), members(order.size());
+  return cholmod_nested_dissection(
+           &pattern, nullptr, 0, order.data(), parents.data(), members.data(), &common) >= 0;
+}
+
 // Orders the graph of the blocks, one node per group of `blockSize` unknowns (coupled where the
 // matrix couples any of their unknowns), and expands the order to the unknowns. A group's
 // unknowns stay together, and the graph ordered is blockSize^2 times smaller.
@@ -117,21 +133,7 @@ std::vector<int> OrderBlocks(
   pattern.sorted = 1;
   pattern.packed = 1;
   std::vector<int> order(blocks);
-  bool ordered = false;
-  if (method == CHOLMOD_AMD)
-  {
-    ordered = cholmod_amd(&pattern, nullptr, 0, order.data(), &common);
-  }
-  else if (method == CHOLMOD_METIS)
-  {
-    ordered = cholmod_metis(&pattern, nullptr, 0, 1, order.data(), &common);
-  }
-  else
-  {
-    std::vector<int> parents(blocks), members(blocks);
-    ordered = cholmod_nested_dissection(
-                &pattern, nullptr, 0, order.data(), parents.data(), members.data(), &common) >= 0;
-  }
+  const bool ordered = OrderPattern(pattern, method, common, order);
   if (!ordered)
   {
     return {};
@@ -268,6 +270,37 @@ struct SupernodeTree
     return *std::max_element(load.begin(), load.end());
   }
 
+  // Each supernode's part (-1 for the top) and subtree root, `subtrees` dealt to `parts` bins.
+  void Resolve(std::vector<int>& subtrees, const std::vector<int>& top, int parts,
+    std::vector<int>& binOf, std::vector<int>& subtreeRoot) const
+  {
+    const int supernodes = static_cast<int>(this->Parent.size());
+    binOf.assign(supernodes, -1);
+    subtreeRoot.assign(supernodes, -1);
+    this->Assign(subtrees, parts, &binOf);
+    std::vector<char> isTop(supernodes, 0);
+    for (int s : top)
+    {
+      isTop[s] = 1;
+    }
+    for (int s = supernodes - 1; s >= 0; --s)
+    {
+      if (isTop[s])
+      {
+        binOf[s] = -1;
+      }
+      else if (binOf[s] >= 0)
+      {
+        subtreeRoot[s] = s;
+      }
+      else
+      {
+        binOf[s] = binOf[this->Parent[s]];
+        subtreeRoot[s] = subtreeRoot[this->Parent[s]];
+      }
+    }
+  }
+
   // Splits the heaviest subtree until the estimated time, serial top plus the heaviest part,
   // stops improving; each split moves one separator to the top.
   void Split(int parts, std::vector<int>& bestSubtrees, std::vector<int>& bestTop) const
@@ -373,29 +406,8 @@ void CholmodFactor::Internals::Place(
   this->TopColumns.clear();
   this->Top.clear();
   this->ParallelShare = 0.0;
-  std::vector<int> binOf(supernodes, -1), subtreeRoot(supernodes, -1);
-  tree.Assign(subtrees, parts, &binOf);
-  std::vector<char> isTop(supernodes, 0);
-  for (int s : top)
-  {
-    isTop[s] = 1;
-  }
-  for (int s = supernodes - 1; s >= 0; --s)
-  {
-    if (isTop[s])
-    {
-      binOf[s] = -1;
-    }
-    else if (binOf[s] >= 0)
-    {
-      subtreeRoot[s] = s;
-    }
-    else
-    {
-      binOf[s] = binOf[tree.Parent[s]];
-      subtreeRoot[s] = subtreeRoot[tree.Parent[s]];
-    }
-  }
+  std::vector<int> binOf, subtreeRoot;
+  tree.Resolve(subtrees, top, parts, binOf, subtreeRoot);
   for (int s = 0; s < supernodes; ++s)
   {
     const int columns = super[s + 1] - super[s];

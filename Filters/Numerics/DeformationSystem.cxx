@@ -6,14 +6,33 @@ std::string DeformationSystem::Build(
   const SurfaceMesh& mesh, const EditRegion& region, const DeformationOptions& options)
 {
   const int n = region.GetNumberOfVertices();
-  const auto& positions = mesh.GetPositions();
   std::vector<int> local(mesh.GetNumberOfVertices(), -1);
   for (int k = 0; k < n; ++k)
   {
     local[region.Vertices[k]] = k;
   }
-
   const LaplacianOperator laplacian(mesh, options.Weights);
+  this->AssembleOperator(mesh, region, laplacian, local, options.Order);
+  if (options.Order >= 2)
+  {
+    this->BuildFirstOrder(mesh, region, laplacian, local);
+  }
+  this->WeighConstraints(region, options);
+  const std::string error = this->FactorNormalEquations(options);
+  if (!error.empty())
+  {
+    return error;
+  }
+  this->ComputeResponses(region.NumberOfHandleGroups);
+  return {};
+}
+
+void DeformationSystem::AssembleOperator(const SurfaceMesh& mesh, const EditRegion& region,
+  const LaplacianOperator& laplacian, const std::vector<int>& local, int order)
+{
+  // The operator's rows over the ROI columns; its terms on fixed vertices go to FixedPart.
+  const int n = region.GetNumberOfVertices();
+  const auto& positions = mesh.GetPositions();
   std::vector<Eigen::Triplet<double>> triplets;
   this->RestPositions.resize(n, 3);
   this->RestDelta.setZero(n, 3);
@@ -26,11 +45,11 @@ std::string DeformationSystem::Build(
     // handle. Its rows at handle vertices would instead ask a turned handle to keep the rest
     // orientation of its second-order coordinates, which reaches two rings into the free part
     // and inflates it.
-    if (options.Order >= 2 && region.Roles[k] == VertexRole::Handle)
+    if (order >= 2 && region.Roles[k] == VertexRole::Handle)
     {
       continue;
     }
-    for (const auto& [j, coefficient] : laplacian.Row(v, options.Order))
+    for (const auto& [j, coefficient] : laplacian.Row(v, order))
     {
       this->RestDelta.row(k) += coefficient * positions[j].transpose();
       if (local[j] >= 0)
@@ -45,11 +64,11 @@ std::string DeformationSystem::Build(
   }
   this->RegionOperator.resize(n, n);
   this->RegionOperator.setFromTriplets(triplets.begin(), triplets.end());
-  if (options.Order >= 2)
-  {
-    this->BuildFirstOrder(mesh, region, laplacian, local);
-  }
+}
 
+void DeformationSystem::WeighConstraints(const EditRegion& region, const DeformationOptions& options)
+{
+  const int n = region.GetNumberOfVertices();
   this->SquaredWeights.setZero(n);
   this->HandleGroups = region.HandleGroups;
   for (int k = 0; k < n; ++k)
@@ -64,7 +83,11 @@ std::string DeformationSystem::Build(
       this->SquaredWeights[k] = weight * weight;
     }
   }
+}
 
+std::string DeformationSystem::FactorNormalEquations(const DeformationOptions& options)
+{
+  const int n = this->GetNumberOfUnknowns();
   Eigen::SparseMatrix<double> normalMatrix =
     Eigen::SparseMatrix<double>(this->RegionOperator.transpose()) *
     Eigen::SparseMatrix<double>(this->RegionOperator);
@@ -75,16 +98,14 @@ std::string DeformationSystem::Build(
   normalMatrix.makeCompressed();
   this->RegionOperatorTransposed = this->RegionOperator.transpose();
   this->RestRightHandSide = this->RegionOperatorTransposed * (this->RestDelta - this->FixedPart);
-  const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
+  return this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
     options.MaximumFactorBytes, 1, options.Distributed);
-  if (!error.empty())
-  {
-    return error;
-  }
+}
 
+void DeformationSystem::ComputeResponses(int groups)
+{
   // The rest solution and the handle responses, in one multi-column solve.
-  const int groups = region.NumberOfHandleGroups;
-  Eigen::MatrixXd rhs(n, 3 + 4 * groups);
+  Eigen::MatrixXd rhs(this->GetNumberOfUnknowns(), 3 + 4 * groups);
   rhs.leftCols<3>() =
     this->RestRightHandSide + this->ConstraintRightHandSide(std::vector<AffineMap>(groups, AffineMap::Zero()));
   for (int g = 0; g < groups; ++g)
@@ -96,7 +117,6 @@ std::string DeformationSystem::Build(
   this->Responses.Offsets = solution.leftCols<3>();
   this->Responses.Responses = solution.rightCols(4 * groups);
   this->NumberOfHandleGroups = groups;
-  return {};
 }
 
 void DeformationSystem::BuildFirstOrder(const SurfaceMesh& mesh, const EditRegion& region,

@@ -115,6 +115,13 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
 
 private:
+  // Build's steps: the operator's rows over the ROI (and the fixed part), the constraint
+  // weights, the normal equations' factor, and the rest solution with the handle responses.
+  void AssembleOperator(const SurfaceMesh& mesh, const EditRegion& region,
+    const LaplacianOperator& laplacian, const std::vector<int>& local, int order);
+  void WeighConstraints(const EditRegion& region, const DeformationOptions& options);
+  std::string FactorNormalEquations(const DeformationOptions& options);
+  void ComputeResponses(int groups);
   void BuildFirstOrder(const SurfaceMesh& mesh, const EditRegion& region,
     const LaplacianOperator& laplacian, const std::vector<int>& local);
 

@@ -64,11 +64,8 @@ void AssignRelativeDistances(const SurfaceMesh& mesh, const std::vector<double>&
   }
 }
 
-// Assigns anchor and free roles from the relative distances, then checks that the edit is well
-// posed: every connected part of the ROI must touch a fixed vertex, hold an anchor, or hold two
-// handle groups. A part held by one handle group alone would only follow it rigidly (and with a
-// translation-invariant operator, its shape is otherwise undetermined).
-std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& region)
+// Handle, anchor (the outer padding of the relative distances) or free.
+void AssignRoles(double anchorPadding, EditRegion& region)
 {
   const int n = region.GetNumberOfVertices();
   region.Roles.resize(n);
@@ -87,49 +84,60 @@ std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& re
       region.Roles[k] = VertexRole::Free;
     }
   }
+}
 
+// Whether the connected part of the ROI around row `seed` (marked in `visited`) is held: it
+// touches a fixed vertex, holds an anchor, or holds two handle groups.
+bool IsHeld(const SurfaceMesh& mesh, const EditRegion& region, const std::vector<int>& local,
+  int seed, std::vector<char>& visited)
+{
+  bool held = false;
+  int firstGroup = -1;
+  visited[seed] = 1;
+  std::vector<int> stack(1, seed);
+  while (!stack.empty())
+  {
+    const int k = stack.back();
+    stack.pop_back();
+    held = held || region.Roles[k] == VertexRole::Anchor;
+    if (region.HandleGroups[k] >= 0)
+    {
+      held = held || (firstGroup >= 0 && firstGroup != region.HandleGroups[k]);
+      firstGroup = region.HandleGroups[k];
+    }
+    const int v = region.Vertices[k];
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+    {
+      if (local[*w] < 0)
+      {
+        held = true;
+      }
+      else if (!visited[local[*w]])
+      {
+        visited[local[*w]] = 1;
+        stack.push_back(local[*w]);
+      }
+    }
+  }
+  return held;
+}
+
+// Assigns the roles, then checks that the edit is well posed: every connected part of the ROI
+// must be held. A part held by one handle group alone would only follow it rigidly (and with a
+// translation-invariant operator, its shape is otherwise undetermined).
+std::string Finish(const SurfaceMesh& mesh, double anchorPadding, EditRegion& region)
+{
+  AssignRoles(anchorPadding, region);
+  const int n = region.GetNumberOfVertices();
   std::vector<int> local(mesh.GetNumberOfVertices(), -1);
   for (int k = 0; k < n; ++k)
   {
     local[region.Vertices[k]] = k;
   }
   std::vector<char> visited(n, 0);
-  std::vector<int> stack;
   for (int seed = 0; seed < n; ++seed)
   {
-    if (visited[seed])
-    {
-      continue;
-    }
-    bool pinned = false;
-    int firstGroup = -1;
-    visited[seed] = 1;
-    stack.assign(1, seed);
-    while (!stack.empty())
-    {
-      const int k = stack.back();
-      stack.pop_back();
-      pinned = pinned || region.Roles[k] == VertexRole::Anchor;
-      if (region.HandleGroups[k] >= 0)
-      {
-        pinned = pinned || (firstGroup >= 0 && firstGroup != region.HandleGroups[k]);
-        firstGroup = region.HandleGroups[k];
-      }
-      const int v = region.Vertices[k];
-      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
-      {
-        if (local[*w] < 0)
-        {
-          pinned = true;
-        }
-        else if (!visited[local[*w]])
-        {
-          visited[local[*w]] = 1;
-          stack.push_back(local[*w]);
-        }
-      }
-    }
-    if (!pinned)
+    if (!visited[seed] && !IsHeld(mesh, region, local, seed, visited))
     {
       return "a connected part of the region of interest has no fixed vertex and no anchor (and "
              "at most one handle group), so nothing holds it in place: make the ROI smaller than "

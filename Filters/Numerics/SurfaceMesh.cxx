@@ -105,7 +105,12 @@ void SurfaceMesh::BuildAdjacency()
   BuildCompressedRows(n, incidences, this->TriangleOffsets, this->VertexTriangles);
 }
 
-void SurfaceMesh::OrientTriangles()
+namespace
+{
+// Per triangle, the triangles across its manifold edges, each with whether the two run the edge
+// in the same direction (then one of them must flip).
+std::vector<std::vector<std::pair<int, bool>>> ManifoldNeighbors(
+  const std::vector<std::array<int, 3>>& triangles)
 {
   // Directed edges (from, to, triangle), sorted so that the triangles of one undirected edge
   // are adjacent.
@@ -118,21 +123,21 @@ void SurfaceMesh::OrientTriangles()
       return std::tie(Low, High, Triangle) < std::tie(other.Low, other.High, other.Triangle);
     }
   };
-  const int count = this->GetNumberOfTriangles();
+  const int count = static_cast<int>(triangles.size());
   std::vector<Edge> edges;
   edges.reserve(3 * count);
   for (int t = 0; t < count; ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const int a = this->Triangles[t][k];
-      const int b = this->Triangles[t][(k + 1) % 3];
+      const int a = triangles[t][k];
+      const int b = triangles[t][(k + 1) % 3];
       edges.push_back({ std::min(a, b), std::max(a, b), t, a < b });
     }
   }
   std::sort(edges.begin(), edges.end());
-  // Manifold edges only: pairs of triangles across each; flipping makes them run it oppositely.
-  std::vector<std::vector<std::pair<int, bool>>> across(count); // (neighbour, same direction)
+  // Manifold edges only: pairs of triangles across each.
+  std::vector<std::vector<std::pair<int, bool>>> across(count);
   for (std::size_t i = 0; i + 1 < edges.size(); ++i)
   {
     const Edge& e = edges[i];
@@ -146,6 +151,16 @@ void SurfaceMesh::OrientTriangles()
       across[f.Triangle].emplace_back(e.Triangle, e.Forward == f.Forward);
     }
   }
+  return across;
+}
+}
+
+void SurfaceMesh::OrientTriangles()
+{
+  // Flipping makes the triangles across each manifold edge run it oppositely: each patch
+  // reachable across such edges is walked from a seed.
+  const auto across = ManifoldNeighbors(this->Triangles);
+  const int count = this->GetNumberOfTriangles();
   std::vector<int> flip(count, -1); // -1 unvisited, 0 keep, 1 flip
   std::vector<int> patch, stack;
   for (int seed = 0; seed < count; ++seed)

@@ -168,66 +168,18 @@ vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vt
 void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
   vtkPolyData* input, vtkDataArray* labels, bool fromSelection)
 {
-  // The serial filter's reach (ComputeReach) over the whole surface, from a few numbers per
-  // rank and the labelled points, widened by two of the longest edges: the polygons around the
-  // ring of fixed vertices then come along from every piece, whichever holds them.
-  vtkMultiProcessController* controller = this->Controller;
-  double local[8];
-  double bounds[6];
-  input->GetBounds(bounds);
-  const bool empty = input->GetNumberOfPoints() == 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    local[2 * a] = empty ? VTK_DOUBLE_MIN : -bounds[2 * a];
-    local[2 * a + 1] = empty ? VTK_DOUBLE_MIN : bounds[2 * a + 1];
-  }
-  local[6] = LongestPolygonEdge(input);
+  // The serial filter's reach (vtkLaplacianRegionSelector::ComputeReach) over the whole
+  // surface, from a few numbers per rank and the labelled points, widened by two of the longest
+  // edges: the polygons around the ring of fixed vertices then come along from every piece,
+  // whichever holds them.
   const bool labelled = labels != nullptr || this->SelectionMode == SELECTION_ARRAY;
-  const vtkIdType nearest =
-    labelled ? -1 : vtkLaplacianSurfaceAdapter::FindNearestCorner(input, this->HandleCenter);
-  local[7] = nearest < 0 ? VTK_DOUBLE_MIN
-                         : -std::sqrt(vtkMath::Distance2BetweenPoints(input->GetPoint(nearest), this->HandleCenter));
-  double global[8];
-  controller->AllReduce(local, global, 8, vtkCommunicator::MAX_OP);
-  double box[6];
-  for (int a = 0; a < 3; ++a)
-  {
-    box[2 * a] = -global[2 * a];
-    box[2 * a + 1] = global[2 * a + 1];
-  }
-  this->WholeDiagonal = vtkBoundingBox(box).IsValid() ? vtkBoundingBox(box).GetDiagonalLength() : 0.0;
-
+  double longestEdge = 0.0;
+  double extent = this->ReduceExtents(input, labelled, longestEdge);
   vtkLaplacianSurfaceAdapter::Reach& reach = this->Internals->Reach;
   reach = vtkLaplacianSurfaceAdapter::Reach();
-  double extent = -global[7];
   if (labelled)
   {
-    std::vector<double> seeds;
-    for (vtkIdType i = 0; labels && i < labels->GetNumberOfTuples(); ++i)
-    {
-      if (labels->GetComponent(i, 0) != 0.0)
-      {
-        const double* p = input->GetPoint(i);
-        seeds.insert(seeds.end(), p, p + 3);
-      }
-    }
-    const int ranks = controller->GetNumberOfProcesses();
-    const vtkIdType count = static_cast<vtkIdType>(seeds.size());
-    std::vector<vtkIdType> counts(ranks), offsets(ranks, 0);
-    controller->AllGather(&count, counts.data(), 1);
-    for (int r = 1; r < ranks; ++r)
-    {
-      offsets[r] = offsets[r - 1] + counts[r - 1];
-    }
-    std::vector<double> all(offsets[ranks - 1] + counts[ranks - 1]);
-    controller->AllGatherV(seeds.data(), all.data(), count, counts.data(), offsets.data());
-    vtkBoundingBox seedBox;
-    for (std::size_t k = 0; k + 2 < all.size(); k += 3)
-    {
-      reach.Seeds.push_back({ all[k], all[k + 1], all[k + 2] });
-      seedBox.AddPoint(all.data() + k);
-    }
-    extent = seedBox.IsValid() ? 0.5 * seedBox.GetDiagonalLength() : -1.0;
+    extent = this->GatherSeeds(input, labels, reach.Seeds);
   }
   else
   {
@@ -239,8 +191,76 @@ void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
     return; // nothing labelled, or no polygon: every piece goes, and the edit says why
   }
   const double growth = fromSelection ? this->AbsoluteRadius(this->ROIRadius) : 0.0;
-  reach.Margin = vtkLaplacianRegionSelector::ReachMargin(this->RegionParameters(), labelled, extent, growth) +
-    2.0 * global[6];
+  reach.Margin =
+    vtkLaplacianRegionSelector::ReachMargin(this->RegionParameters(), labelled, extent, growth) +
+    2.0 * longestEdge;
+}
+
+double vtkPLaplacianDeformationFilter::ReduceExtents(
+  vtkPolyData* input, bool labelled, double& longestEdge)
+{
+  // One reduction: the pieces' bounds (which set WholeDiagonal), their longest edge, and the
+  // handle centre's distance to the nearest polygon corner (-1 if there is none).
+  double local[8];
+  double bounds[6];
+  input->GetBounds(bounds);
+  const bool empty = input->GetNumberOfPoints() == 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    local[2 * a] = empty ? VTK_DOUBLE_MIN : -bounds[2 * a];
+    local[2 * a + 1] = empty ? VTK_DOUBLE_MIN : bounds[2 * a + 1];
+  }
+  local[6] = LongestPolygonEdge(input);
+  const vtkIdType nearest =
+    labelled ? -1 : vtkLaplacianSurfaceAdapter::FindNearestCorner(input, this->HandleCenter);
+  local[7] = nearest < 0
+    ? VTK_DOUBLE_MIN
+    : -std::sqrt(vtkMath::Distance2BetweenPoints(input->GetPoint(nearest), this->HandleCenter));
+  double global[8];
+  this->Controller->AllReduce(local, global, 8, vtkCommunicator::MAX_OP);
+  double box[6];
+  for (int a = 0; a < 3; ++a)
+  {
+    box[2 * a] = -global[2 * a];
+    box[2 * a + 1] = global[2 * a + 1];
+  }
+  this->WholeDiagonal =
+    vtkBoundingBox(box).IsValid() ? vtkBoundingBox(box).GetDiagonalLength() : 0.0;
+  longestEdge = global[6];
+  return -global[7];
+}
+
+double vtkPLaplacianDeformationFilter::GatherSeeds(
+  vtkPolyData* input, vtkDataArray* labels, std::vector<std::array<double, 3>>& seeds)
+{
+  // Every rank's labelled points; returns half their extent (-1 if there are none).
+  std::vector<double> local;
+  for (vtkIdType i = 0; labels && i < labels->GetNumberOfTuples(); ++i)
+  {
+    if (labels->GetComponent(i, 0) != 0.0)
+    {
+      const double* p = input->GetPoint(i);
+      local.insert(local.end(), p, p + 3);
+    }
+  }
+  vtkMultiProcessController* controller = this->Controller;
+  const int ranks = controller->GetNumberOfProcesses();
+  const vtkIdType count = static_cast<vtkIdType>(local.size());
+  std::vector<vtkIdType> counts(ranks), offsets(ranks, 0);
+  controller->AllGather(&count, counts.data(), 1);
+  for (int r = 1; r < ranks; ++r)
+  {
+    offsets[r] = offsets[r - 1] + counts[r - 1];
+  }
+  std::vector<double> all(offsets[ranks - 1] + counts[ranks - 1]);
+  controller->AllGatherV(local.data(), all.data(), count, counts.data(), offsets.data());
+  vtkBoundingBox box;
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+  {
+    seeds.push_back({ all[k], all[k + 1], all[k + 2] });
+    box.AddPoint(all.data() + k);
+  }
+  return box.IsValid() ? 0.5 * box.GetDiagonalLength() : -1.0;
 }
 
 double vtkPLaplacianDeformationFilter::LongestPolygonEdge(vtkPolyData* input)

@@ -34,7 +34,9 @@
 #include "vtkLaplacianEditingModule.h" // for export macro
 #include "vtkSmartPointer.h"           // for vtkSmartPointer
 
+#include <array>  // for std::array
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 class vtkDataArray;
 class vtkIntArray;
@@ -89,6 +91,11 @@ private:
   // The reach of the edit over the whole surface, the same on every rank (collective), into
   // the internals; sets WholeDiagonal.
   void UpdateGlobalReach(vtkPolyData* input, vtkDataArray* labels, bool fromSelection);
+  // Its steps (collective): the pieces' extents, which set WholeDiagonal (returns the handle
+  // centre's distance to the nearest polygon corner, -1 for none, and the longest edge); and
+  // the labelled points of every piece (returns half their extent, -1 for none).
+  double ReduceExtents(vtkPolyData* input, bool labelled, double& longestEdge);
+  double GatherSeeds(vtkPolyData* input, vtkDataArray* labels, std::vector<std::array<double, 3>>& seeds);
   double LongestPolygonEdge(vtkPolyData* input);
   // Rank 0: the parts in reach of all pieces, appended; true on rank 0.
   bool GatherPieces(vtkPolyData* input, vtkSelection* selection);
