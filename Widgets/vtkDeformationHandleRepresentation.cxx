@@ -343,68 +343,11 @@ void vtkDeformationHandleRepresentation::WidgetInteraction(double eventPosition[
   switch (this->InteractionState)
   {
     case Translating:
-    {
-      double motion[3];
-      vtkMath::Subtract(world, this->StartWorld, motion);
-      if (this->ConstrainToAxis)
-      {
-        // Along the frame axis the motion follows most, drawn while the drag lasts.
-        int best = AxisX;
-        double along = 0.0, direction[3];
-        for (int axis = AxisX; axis <= AxisZ; ++axis)
-        {
-          this->GetFrameAxis(axis, direction);
-          const double component = vtkMath::Dot(motion, direction);
-          if (std::abs(component) > std::abs(along))
-          {
-            along = component;
-            best = axis;
-          }
-        }
-        this->GetFrameAxis(best, direction);
-        vtkMath::MultiplyScalar(direction, along);
-        std::copy(direction, direction + 3, motion);
-        this->GetFrameAxis(best, direction);
-        this->AxisActor->GetProperty()->SetColor(this->RingProperties[best]->GetColor());
-        this->ShowAxis(direction);
-      }
-      vtkMath::Add(this->StartTranslation, motion, this->Translation);
+      this->Translate(world);
       break;
-    }
     case Rotating:
-    {
-      // A ring seen well: the angle the cursor swept about the axis in the ring's plane since
-      // the drag started. A ring seen nearly edge-on: the cursor's motion along the ring's
-      // tangent on screen, a radian per projected ring radius.
-      double angle = 0.0, now[3], from[3], to[3], cross[3];
-      if (this->TangentPerRadian[0] != 0.0 || this->TangentPerRadian[1] != 0.0)
-      {
-        const double dx = eventPosition[0] - this->StartPosition[0];
-        const double dy = eventPosition[1] - this->StartPosition[1];
-        angle = (dx * this->TangentPerRadian[0] + dy * this->TangentPerRadian[1]) /
-          (this->TangentPerRadian[0] * this->TangentPerRadian[0] +
-            this->TangentPerRadian[1] * this->TangentPerRadian[1]);
-      }
-      else if (this->DisplayToPlane(eventPosition[0], eventPosition[1], this->StartAxis, now))
-      {
-        vtkMath::Subtract(this->StartWorld, center, from);
-        vtkMath::Subtract(now, center, to);
-        vtkMath::Cross(from, to, cross);
-        angle = std::atan2(vtkMath::Dot(cross, this->StartAxis), vtkMath::Dot(from, to));
-      }
-      vtkNew<vtkTransform> turn;
-      turn->RotateWXYZ(vtkMath::DegreesFromRadians(angle), this->StartAxis);
-      double turnMatrix[3][3];
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          turnMatrix[r][c] = turn->GetMatrix()->GetElement(r, c);
-        }
-      }
-      vtkMath::Multiply3x3(turnMatrix, this->StartRotation, this->Rotation);
+      this->Rotate(eventPosition, center);
       break;
-    }
     case ResizingROI:
       this->ROIRadius = std::max(std::sqrt(vtkMath::Distance2BetweenPoints(world, center)),
         1.5 * this->HandleRadius);
@@ -418,6 +361,69 @@ void vtkDeformationHandleRepresentation::WidgetInteraction(double eventPosition[
       return;
   }
   this->UpdateTransform();
+}
+
+void vtkDeformationHandleRepresentation::Translate(const double world[3])
+{
+  double motion[3];
+  vtkMath::Subtract(world, this->StartWorld, motion);
+  if (this->ConstrainToAxis)
+  {
+    // Along the frame axis the motion follows most, drawn while the drag lasts.
+    int best = AxisX;
+    double along = 0.0, direction[3];
+    for (int axis = AxisX; axis <= AxisZ; ++axis)
+    {
+      this->GetFrameAxis(axis, direction);
+      const double component = vtkMath::Dot(motion, direction);
+      if (std::abs(component) > std::abs(along))
+      {
+        along = component;
+        best = axis;
+      }
+    }
+    this->GetFrameAxis(best, direction);
+    vtkMath::MultiplyScalar(direction, along);
+    std::copy(direction, direction + 3, motion);
+    this->GetFrameAxis(best, direction);
+    this->AxisActor->GetProperty()->SetColor(this->RingProperties[best]->GetColor());
+    this->ShowAxis(direction);
+  }
+  vtkMath::Add(this->StartTranslation, motion, this->Translation);
+}
+
+void vtkDeformationHandleRepresentation::Rotate(const double eventPosition[2], const double center[3])
+{
+  // A ring seen well: the angle the cursor swept about the axis in the ring's plane since the
+  // drag started. A ring seen nearly edge-on: the cursor's motion along the ring's tangent on
+  // screen, a radian per projected ring radius.
+  double angle = 0.0, now[3], from[3], to[3], cross[3];
+  if (this->TangentPerRadian[0] != 0.0 || this->TangentPerRadian[1] != 0.0)
+  {
+    const double dx = eventPosition[0] - this->StartPosition[0];
+    const double dy = eventPosition[1] - this->StartPosition[1];
+    angle = (dx * this->TangentPerRadian[0] + dy * this->TangentPerRadian[1]) /
+      (this->TangentPerRadian[0] * this->TangentPerRadian[0] +
+        this->TangentPerRadian[1] * this->TangentPerRadian[1]);
+  }
+  else if (this->DisplayToPlane(eventPosition[0], eventPosition[1], this->StartAxis, now))
+  {
+    vtkMath::Subtract(this->StartWorld, center, from);
+    vtkMath::Subtract(now, center, to);
+    vtkMath::Cross(from, to, cross);
+    angle = std::atan2(vtkMath::Dot(cross, this->StartAxis), vtkMath::Dot(from, to));
+  }
+  vtkNew<vtkTransform> turn;
+  turn->RotateWXYZ(vtkMath::DegreesFromRadians(angle), this->StartAxis);
+  double turnMatrix[3][3];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      turnMatrix[r][c] = turn->GetMatrix()->GetElement(r, c);
+    }
+  }
+  vtkMath::Multiply3x3(turnMatrix, this->StartRotation, this->Rotation);
 }
 
 void vtkDeformationHandleRepresentation::EndWidgetInteraction(double[2])

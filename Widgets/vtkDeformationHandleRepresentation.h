@@ -195,6 +195,10 @@ protected:
   void StartRingTangent();
   // Draws the axis of a constrained translation through the handle.
   void ShowAxis(const double direction[3]);
+  // WidgetInteraction's drags: the translation to the view-plane point `world` (along one
+  // frame axis when constrained), and the turn of a ring about `center`.
+  void Translate(const double world[3]);
+  void Rotate(const double eventPosition[2], const double center[3]);
   // Every actor, the rings first.
   std::array<vtkActor*, 7> Actors();
   // Renders the visible actors with `render` (an opaque or translucent pass).

@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace
@@ -102,13 +103,18 @@ std::string Event(const char* name, double x, double y)
   std::snprintf(line, sizeof(line), "%s %d %d 0 0 0 0 i\n", name, static_cast<int>(x), static_cast<int>(y));
   return line;
 }
-}
 
-int main(int argc, char* argv[])
+struct Options
 {
-  std::string meshPath, screenshot;
-  int mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
-  int up = 1;
+  std::string Mesh;
+  std::string Screenshot;
+  int Mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
+  int Up = 1;
+};
+
+// The command line into `options`; an exit code when the program should stop (help, an error).
+std::optional<int> ParseArguments(int argc, char* argv[], Options& options)
+{
   const std::string usage = std::string("usage: ") + argv[0] +
     " [--mode none|explicit|implicit|arap] [--up x|y|z] [--offscreen SCREENSHOT.png] [MESH]";
   for (int i = 1; i < argc; ++i)
@@ -116,28 +122,34 @@ int main(int argc, char* argv[])
     const std::string arg = argv[i];
     const std::string value = i + 1 < argc ? argv[i + 1] : "";
     if (arg == "--mode" && std::count(std::begin(ModeNames), std::end(ModeNames), value))
-      mode = static_cast<int>(std::find(std::begin(ModeNames), std::end(ModeNames), value) - ModeNames), ++i;
+      options.Mode =
+        static_cast<int>(std::find(std::begin(ModeNames), std::end(ModeNames), value) - ModeNames), ++i;
     else if (arg == "--up" && (value == "x" || value == "y" || value == "z"))
-      up = value[0] - 'x', ++i;
+      options.Up = value[0] - 'x', ++i;
     else if (arg == "--offscreen" && !value.empty())
-      screenshot = value, ++i;
+      options.Screenshot = value, ++i;
     else if (arg == "-h" || arg == "--help")
     {
       std::cout << usage << "\n" << Help << "\n";
       return EXIT_SUCCESS;
     }
-    else if (arg[0] != '-' && meshPath.empty())
-      meshPath = arg;
+    else if (arg[0] != '-' && options.Mesh.empty())
+      options.Mesh = arg;
     else
     {
       std::cerr << "error: unexpected argument '" << arg << "'; " << usage << "\n";
       return EXIT_FAILURE;
     }
   }
+  return std::nullopt;
+}
 
-  vtkNew<vtkLaplacianDeformationFilter> filter;
+// The mesh to edit, the filter set up on it, and the scene: the embedded bumpy plane without a
+// path; nullptr, with the reason on stderr, for a file it cannot read.
+vtkSmartPointer<vtkRenderer> SetUpScene(const Options& options, vtkLaplacianDeformationFilter* filter)
+{
   vtkSmartPointer<vtkPolyData> mesh;
-  if (meshPath.empty())
+  if (options.Mesh.empty())
   {
     mesh = EditingScene::SetUpBumpyPlaneEdit(filter);
     filter->SetHandleTransform(nullptr);
@@ -145,22 +157,21 @@ int main(int argc, char* argv[])
   else
   {
     std::string error;
-    mesh = MeshReader::Read(meshPath, error);
+    mesh = MeshReader::Read(options.Mesh, error);
     if (!mesh)
     {
       std::cerr << "error: " << error << "\n";
-      return EXIT_FAILURE;
+      return nullptr;
     }
     filter->SetInputData(mesh);
     filter->SetRadiusUnitsToDiagonalFraction();
     filter->SetHandleRadius(0.03);
     filter->SetROIRadius(0.15);
   }
-  filter->SetRotationMode(mode);
-
+  filter->SetRotationMode(options.Mode);
   const double full[4] = { 0.0, 0.0, 1.0, 1.0 };
   vtkSmartPointer<vtkRenderer> renderer = EditingScene::MakeRenderer(mesh, full);
-  if (meshPath.empty())
+  if (options.Mesh.empty())
   {
     renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.0);
     renderer->ResetCamera();
@@ -168,13 +179,18 @@ int main(int argc, char* argv[])
   else
   {
     // The first handle on the point that stands out most in the first view.
-    const int view = EditingScene::FrameMesh(renderer, mesh, up);
+    const int view = EditingScene::FrameMesh(renderer, mesh, options.Up);
     filter->SetHandleCenter(mesh->GetPoint(EditingScene::ProtrudingPoint(mesh, view)));
   }
   filter->Update();
   auto* surface = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0));
   surface->GetMapper()->SetInputConnection(filter->GetOutputPort());
-  vtkNew<vtkTextActor> help, status;
+  return renderer;
+}
+
+// The help at the bottom, the status at the top.
+void AddTexts(vtkRenderer* renderer, vtkTextActor* help, vtkTextActor* status)
+{
   help->SetInput(Help);
   help->GetTextProperty()->SetFontSize(13);
   help->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
@@ -186,12 +202,54 @@ int main(int argc, char* argv[])
   status->SetPosition(0.01, 0.97);
   renderer->AddActor2D(help);
   renderer->AddActor2D(status);
+}
 
+// Offscreen: drags the handle up by a fifth of the window, as a user would; returns how far the
+// handle moved.
+double PlayDrag(vtkRenderer* renderer, vtkDeformationHandleWidget* widget)
+{
+  double center[3];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
+  renderer->WorldToDisplay();
+  const double x = renderer->GetDisplayPoint()[0], y = renderer->GetDisplayPoint()[1];
+  std::string events = Event("MouseMoveEvent", x, y) + Event("LeftButtonPressEvent", x, y);
+  for (int step = 1; step <= 10; ++step)
+  {
+    events += Event("MouseMoveEvent", x, y + 14.0 * step);
+  }
+  events += Event("LeftButtonReleaseEvent", x, y + 140.0);
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  recorder->SetInteractor(widget->GetInteractor());
+  recorder->ReadFromInputStringOn();
+  recorder->SetInputString(events.c_str());
+  recorder->Play(); // the release refreshes the status
+  double moved[3];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(moved);
+  return std::sqrt(vtkMath::Distance2BetweenPoints(center, moved));
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (const std::optional<int> exitCode = ParseArguments(argc, argv, options))
+  {
+    return *exitCode;
+  }
+  vtkNew<vtkLaplacianDeformationFilter> filter;
+  const vtkSmartPointer<vtkRenderer> renderer = SetUpScene(options, filter);
+  if (!renderer)
+  {
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkTextActor> help, status;
+  AddTexts(renderer, help, status);
   vtkNew<vtkRenderWindow> window;
   window->SetSize(900, 700);
   window->SetWindowName("Laplacian mesh editing");
   window->AddRenderer(renderer);
-  window->SetOffScreenRendering(!screenshot.empty());
+  window->SetOffScreenRendering(!options.Screenshot.empty());
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(window);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
@@ -200,7 +258,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkDeformationHandleWidget> widget;
   widget->SetInteractor(interactor);
   widget->SetDeformationFilter(filter);
-  widget->SetSurfaceProp(surface);
+  widget->SetSurfaceProp(vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(0)));
   widget->On();
 
   Editor editor{ filter, widget, status };
@@ -215,34 +273,13 @@ int main(int argc, char* argv[])
   widget->AddObserver(vtkCommand::EndInteractionEvent, interactionEnd);
   interactor->Initialize();
   window->Render();
-
-  if (screenshot.empty())
+  if (options.Screenshot.empty())
   {
     interactor->Start();
     return EXIT_SUCCESS;
   }
-
-  // Offscreen: drag the handle up by a fifth of the window, as a user would, and save.
-  double center[3];
-  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
-  renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
-  renderer->WorldToDisplay();
-  const double x = renderer->GetDisplayPoint()[0], y = renderer->GetDisplayPoint()[1];
-  std::string events = Event("MouseMoveEvent", x, y) + Event("LeftButtonPressEvent", x, y);
-  for (int step = 1; step <= 10; ++step)
-  {
-    events += Event("MouseMoveEvent", x, y + 14.0 * step);
-  }
-  events += Event("LeftButtonReleaseEvent", x, y + 140.0);
-  vtkNew<vtkInteractorEventRecorder> recorder;
-  recorder->SetInteractor(interactor);
-  recorder->ReadFromInputStringOn();
-  recorder->SetInputString(events.c_str());
-  recorder->Play(); // the release refreshes the status
-  double moved[3];
-  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(moved);
-  const double distance = std::sqrt(vtkMath::Distance2BetweenPoints(center, moved));
-  EditingScene::SaveScreenshot(window, screenshot);
-  std::cout << "handle moved by " << distance << "; wrote " << screenshot << "\n";
+  const double distance = PlayDrag(renderer, widget);
+  EditingScene::SaveScreenshot(window, options.Screenshot);
+  std::cout << "handle moved by " << distance << "; wrote " << options.Screenshot << "\n";
   return distance > 0.0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

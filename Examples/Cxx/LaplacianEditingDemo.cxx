@@ -21,80 +21,145 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
-int main(int argc, char* argv[])
+namespace
 {
-  const char* usage = " [--output-dir DIR] [--mode none|explicit|implicit] [MESH X Y Z ROI_RADIUS]\n";
-  std::string outputDir = "demo-output";
-  int mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
-  std::vector<std::string> args;
+const char* Usage = " [--output-dir DIR] [--mode none|explicit|implicit] [MESH X Y Z ROI_RADIUS]\n";
+
+struct Demo
+{
+  std::string OutputDir = "demo-output";
+  int Mode = vtkLaplacianDeformationFilter::ROTATION_EXPLICIT;
+  std::vector<std::string> Mesh; // empty, or MESH X Y Z ROI_RADIUS
+  std::string MeshName = "embedded bumpy plane";
+  vtkSmartPointer<vtkPolyData> Before;
+  vtkNew<vtkTransform> Pull;
+  double ViewDirection[3] = { 0.0, 1.0, -0.6 };
+  double ViewUp[3] = { 0.0, 0.0, 1.0 };
+};
+
+// The command line into `demo`; an exit code when the program should stop (help, an error).
+std::optional<int> ParseArguments(int argc, char* argv[], Demo& demo)
+{
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if (arg == "--output-dir" && i + 1 < argc)
-      outputDir = argv[++i];
+      demo.OutputDir = argv[++i];
     else if (arg == "--mode" && i + 1 < argc)
     {
       const std::string name = argv[++i];
-      mode = name == "none" ? 0 : (name == "implicit" ? 2 : 1);
+      demo.Mode = name == "none" ? 0 : (name == "implicit" ? 2 : 1);
     }
     else if (arg == "-h" || arg == "--help")
     {
-      std::cout << "usage: " << argv[0] << usage;
+      std::cout << "usage: " << argv[0] << Usage;
       return EXIT_SUCCESS;
     }
     else
-      args.push_back(arg);
+      demo.Mesh.push_back(arg);
   }
-  if (!args.empty() && args.size() != 5)
+  if (!demo.Mesh.empty() && demo.Mesh.size() != 5)
   {
-    std::cerr << "usage: " << argv[0] << usage;
+    std::cerr << "usage: " << argv[0] << Usage;
     return EXIT_FAILURE;
   }
+  return std::nullopt;
+}
 
+// The mesh, the handle and region on it, the pull and the view; false, with the reason on
+// stderr, for a file it cannot read.
+bool SetUpEdit(Demo& demo, vtkLaplacianDeformationFilter* filter)
+{
+  if (demo.Mesh.empty())
+  {
+    demo.Before = EditingScene::SetUpBumpyPlaneEdit(filter);
+    demo.Pull->DeepCopy(filter->GetHandleTransform());
+    return true;
+  }
+  std::string error;
+  demo.Before = MeshReader::Read(demo.Mesh[0], error);
+  if (!demo.Before)
+  {
+    std::cerr << "error: " << error << "\n";
+    return false;
+  }
+  demo.MeshName = demo.Mesh[0];
+  const double center[3] = { std::atof(demo.Mesh[1].c_str()), std::atof(demo.Mesh[2].c_str()),
+    std::atof(demo.Mesh[3].c_str()) };
+  const double radius = std::atof(demo.Mesh[4].c_str());
+  filter->SetInputData(demo.Before);
+  filter->SetHandleCenter(center);
+  filter->SetHandleRadius(0.15 * radius);
+  filter->SetROIRadius(radius);
+  double middle[3], outward[3];
+  demo.Before->GetCenter(middle);
+  vtkMath::Subtract(center, middle, outward);
+  if (vtkMath::Normalize(outward) == 0.0)
+  {
+    outward[2] = 1.0;
+  }
+  demo.Pull->Translate(0.3 * radius * outward[0], 0.3 * radius * outward[1], 0.3 * radius * outward[2]);
+  // Look at the edit from the side.
+  vtkMath::Perpendiculars(outward, demo.ViewDirection, demo.ViewUp, 0.0);
+  return true;
+}
+
+// Drags `handle` to the pull in ten moves, as an interactive session would, and prints the
+// median move.
+void Drag(const Demo& demo, vtkLaplacianDeformationFilter* filter, vtkTransform* handle)
+{
+  std::vector<double> solveTimes;
+  const int moves = 10;
+  for (int move = 1; move <= moves; ++move)
+  {
+    handle->Identity();
+    const double* full = demo.Pull->GetPosition();
+    const double s = static_cast<double>(move) / moves;
+    handle->Translate(s * full[0], s * full[1], s * full[2]);
+    filter->Update();
+    solveTimes.push_back(filter->GetSolveTime());
+  }
+  std::sort(solveTimes.begin(), solveTimes.end());
+  std::cout << "handle move (solve and output, 3 coordinates): median "
+            << 1e3 * solveTimes[moves / 2] << " ms over " << moves << " moves; factorizations: "
+            << filter->GetNumberOfFactorizations() << "\n";
+}
+
+// Writes the edited mesh and the before/after picture.
+void Save(Demo& demo, vtkLaplacianDeformationFilter* filter)
+{
+  std::filesystem::create_directories(demo.OutputDir);
+  const std::string meshPath = demo.OutputDir + "/edited.vtp";
+  const std::string imagePath = demo.OutputDir + "/before-after.png";
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputConnection(filter->GetOutputPort());
+  writer->SetFileName(meshPath.c_str());
+  writer->Write();
+  vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeComparisonWindow(
+    { demo.Before, filter->GetOutput() }, demo.ViewDirection, demo.ViewUp, 600, 600);
+  window->Render();
+  EditingScene::SaveScreenshot(window, imagePath);
+  std::cout << "wrote " << meshPath << " and " << imagePath << "\n";
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Demo demo;
+  if (const std::optional<int> exitCode = ParseArguments(argc, argv, demo))
+  {
+    return *exitCode;
+  }
   vtkNew<vtkLaplacianDeformationFilter> filter;
-  vtkSmartPointer<vtkPolyData> before;
-  double viewDirection[3] = { 0.0, 1.0, -0.6 };
-  double viewUp[3] = { 0.0, 0.0, 1.0 };
-  std::string meshName = "embedded bumpy plane";
-  vtkNew<vtkTransform> pull;
-  if (args.empty())
+  if (!SetUpEdit(demo, filter))
   {
-    before = EditingScene::SetUpBumpyPlaneEdit(filter);
-    pull->DeepCopy(filter->GetHandleTransform());
+    return EXIT_FAILURE;
   }
-  else
-  {
-    std::string error;
-    before = MeshReader::Read(args[0], error);
-    if (!before)
-    {
-      std::cerr << "error: " << error << "\n";
-      return EXIT_FAILURE;
-    }
-    meshName = args[0];
-    const double center[3] = { std::atof(args[1].c_str()), std::atof(args[2].c_str()),
-      std::atof(args[3].c_str()) };
-    const double radius = std::atof(args[4].c_str());
-    filter->SetInputData(before);
-    filter->SetHandleCenter(center);
-    filter->SetHandleRadius(0.15 * radius);
-    filter->SetROIRadius(radius);
-    double middle[3], outward[3];
-    before->GetCenter(middle);
-    vtkMath::Subtract(center, middle, outward);
-    if (vtkMath::Normalize(outward) == 0.0)
-    {
-      outward[2] = 1.0;
-    }
-    pull->Translate(0.3 * radius * outward[0], 0.3 * radius * outward[1], 0.3 * radius * outward[2]);
-    // Look at the edit from the side.
-    vtkMath::Perpendiculars(outward, viewDirection, viewUp, 0.0);
-  }
-
-  filter->SetRotationMode(mode);
+  filter->SetRotationMode(demo.Mode);
   // Select and factor once, with the handle at rest.
   vtkNew<vtkTransform> handle;
   filter->SetHandleTransform(handle);
@@ -105,43 +170,14 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const char* modeNames[] = { "none", "explicit", "implicit" };
-  std::cout << "mesh: " << meshName << " (" << before->GetNumberOfPoints() << " points)\n"
+  std::cout << "mesh: " << demo.MeshName << " (" << demo.Before->GetNumberOfPoints() << " points)\n"
             << "ROI vertices: " << filter->GetNumberOfROIVertices()
             << ", handle vertices: " << filter->GetNumberOfHandleVertices()
-            << ", rotation mode: " << modeNames[mode] << "\n"
+            << ", rotation mode: " << modeNames[demo.Mode] << "\n"
             << "setup: " << filter->GetSetupTime() << " s (ordering "
             << filter->GetAnalysisTime() << " s, factorization " << filter->GetFactorizationTime()
             << " s)\n";
-
-  // Drag the handle to its target in ten moves, as an interactive session would.
-  std::vector<double> solveTimes;
-  const int moves = 10;
-  for (int move = 1; move <= moves; ++move)
-  {
-    handle->Identity();
-    const double* full = pull->GetPosition();
-    const double s = static_cast<double>(move) / moves;
-    handle->Translate(s * full[0], s * full[1], s * full[2]);
-    filter->Update();
-    solveTimes.push_back(filter->GetSolveTime());
-  }
-  std::sort(solveTimes.begin(), solveTimes.end());
-  std::cout << "handle move (solve and output, 3 coordinates): median "
-            << 1e3 * solveTimes[moves / 2] << " ms over " << moves << " moves; factorizations: "
-            << filter->GetNumberOfFactorizations() << "\n";
-
-  std::filesystem::create_directories(outputDir);
-  const std::string meshPath = outputDir + "/edited.vtp";
-  const std::string imagePath = outputDir + "/before-after.png";
-  vtkNew<vtkXMLPolyDataWriter> writer;
-  writer->SetInputConnection(filter->GetOutputPort());
-  writer->SetFileName(meshPath.c_str());
-  writer->Write();
-
-  vtkSmartPointer<vtkRenderWindow> window = EditingScene::MakeComparisonWindow(
-    { before, filter->GetOutput() }, viewDirection, viewUp, 600, 600);
-  window->Render();
-  EditingScene::SaveScreenshot(window, imagePath);
-  std::cout << "wrote " << meshPath << " and " << imagePath << "\n";
+  Drag(demo, filter, handle);
+  Save(demo, filter);
   return EXIT_SUCCESS;
 }

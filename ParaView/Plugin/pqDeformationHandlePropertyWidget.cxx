@@ -70,7 +70,30 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
   auto* show = new QCheckBox(tr("Show Handle"), this);
   show->setChecked(true);
   layout->addWidget(show, row++, 0, 1, 4);
+  this->addFields(group, layout, row);
+  this->addButtons(layout, row);
+  QObject::connect(show, &QCheckBox::toggled, this, &pqDeformationHandlePropertyWidget::setWidgetVisible);
+  QObject::connect(this, &pqDeformationHandlePropertyWidget::widgetVisibilityToggled, show,
+    &QCheckBox::setChecked);
+  this->setWidgetVisible(show->isChecked());
 
+  auto* picker = new pqPointPickingHelper(QKeySequence(tr("P")), /*pick on mesh*/ true, this);
+  QObject::connect(this, &pqPropertyWidget::viewChanged, picker, &pqPointPickingHelper::setView);
+  QObject::connect(picker, &pqPointPickingHelper::pick, this, &pqDeformationHandlePropertyWidget::setCenter);
+  this->connectInteraction();
+  QObject::connect(this, &pqInteractivePropertyWidgetAbstract::widgetVisibilityUpdated, this,
+    &pqDeformationHandlePropertyWidget::showGroupHandles);
+  if (auto* source =
+        pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(proxy))
+  {
+    QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated),
+      this, &pqDeformationHandlePropertyWidget::updateGroupHandles);
+  }
+  this->updateGroupHandles();
+}
+
+void pqDeformationHandlePropertyWidget::addFields(vtkSMPropertyGroup* group, QGridLayout* layout, int& row)
+{
   // One field per component, each linked to the filter's property behind the group's function
   // (unchecked until Apply, so the fields follow a drag). Apply commits only linked values, so
   // every property the widget changes has its fields here.
@@ -100,7 +123,6 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
     }
     ++row;
   }
-
   // Further handle groups: rows added as the filter reports them (updateGroupHandles).
   auto* groups = new QWidget(this);
   this->GroupLayout = new QGridLayout(groups);
@@ -110,7 +132,10 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
   {
     this->addPropertyLink(this, "groupMotions", SIGNAL(groupMotionsChanged()), motions);
   }
+}
 
+void pqDeformationHandlePropertyWidget::addButtons(QGridLayout* layout, int& row)
+{
   auto* reset = new QPushButton(tr("Reset Handle"), this);
   reset->setObjectName("ResetHandle");
   reset->setToolTip(tr("Undo the current move: no translation, no rotation."));
@@ -128,16 +153,10 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
     row++, 0, 1, 4);
   QObject::connect(reset, &QPushButton::clicked, this, &pqDeformationHandlePropertyWidget::resetHandle);
   QObject::connect(commit, &QPushButton::clicked, this, &pqDeformationHandlePropertyWidget::commitEdit);
+}
 
-  QObject::connect(show, &QCheckBox::toggled, this, &pqDeformationHandlePropertyWidget::setWidgetVisible);
-  QObject::connect(this, &pqDeformationHandlePropertyWidget::widgetVisibilityToggled, show,
-    &QCheckBox::setChecked);
-  this->setWidgetVisible(show->isChecked());
-
-  auto* picker = new pqPointPickingHelper(QKeySequence(tr("P")), /*pick on mesh*/ true, this);
-  QObject::connect(this, &pqPropertyWidget::viewChanged, picker, &pqPointPickingHelper::setView);
-  QObject::connect(picker, &pqPointPickingHelper::pick, this, &pqDeformationHandlePropertyWidget::setCenter);
-
+void pqDeformationHandlePropertyWidget::connectInteraction()
+{
   // Auto Apply applies on changeFinished, which the base class emits at the end of a drag: emit
   // it at every move too, so the surface follows the handle during the drag (a move only
   // re-solves). The radii are applied on release (the widget reports them then).
@@ -151,16 +170,6 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
     &pqDeformationHandlePropertyWidget::beginAutoApplyDrag);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
     &pqDeformationHandlePropertyWidget::endAutoApplyDrag);
-
-  QObject::connect(this, &pqInteractivePropertyWidgetAbstract::widgetVisibilityUpdated, this,
-    &pqDeformationHandlePropertyWidget::showGroupHandles);
-  if (auto* source =
-        pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(proxy))
-  {
-    QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated),
-      this, &pqDeformationHandlePropertyWidget::updateGroupHandles);
-  }
-  this->updateGroupHandles();
 }
 
 pqDeformationHandlePropertyWidget::~pqDeformationHandlePropertyWidget()

@@ -67,6 +67,11 @@ protected Q_SLOTS:
   void showGroupHandles(bool visible);
 
 private:
+  // The constructor's parts: the property fields and the further groups' rows, the buttons,
+  // and the drag's connections.
+  void addFields(vtkSMPropertyGroup* group, QGridLayout* layout, int& row);
+  void addButtons(QGridLayout* layout, int& row);
+  void connectInteraction();
   // Sets widget properties, then tells the panel (and Auto Apply) that they changed.
   void pushWidgetChange();
   void addGroupHandle();
