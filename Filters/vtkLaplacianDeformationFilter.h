@@ -6,41 +6,20 @@
  * surrounding region of interest (ROI) from its differential coordinates, after Lipman,
  * Sorkine, Alexa et al., "Laplacian Framework for Interactive Mesh Editing" (2005).
  *
- * The region is chosen either geodesically (the default: a handle of radius HandleRadius around
- * the surface vertex nearest HandleCenter, and an ROI of radius ROIRadius around the same
- * vertex, both measured on the surface, in mesh units or, with SetRadiusUnitsToDiagonalFraction,
- * as fractions of the input's bounding-box diagonal) or from an integer point array selected with
- * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name) whose values
- * are 0 fixed, 1 ROI, 2 handle, and 3, 4, ... further handle groups, or from a vtkSelection
- * on input port 1 (SetSelectionConnection: the selected points are the handle, the ROI lies
- * within ROIRadius of them). The outer AnchorPadding
- * fraction of the ROI becomes stationary anchors, weighted in proportion to their distance from
- * the handle. Each handle group follows its own vtkLinearTransform applied to its rest
- * positions.
+ * The region is geodesic discs about HandleCenter (the default), the labels of an integer
+ * point array (0 fixed, 1 ROI, 2 handle, 3, 4, ... further handle groups), or a vtkSelection on
+ * input port 1. The outer AnchorPadding of the ROI holds stationary anchors. Each handle group
+ * follows its own vtkLinearTransform, or the handle properties. The system is factored once
+ * per region and reused while only the handles move (GetNumberOfFactorizations()).
  *
- * The normal equations are factored once per region and reused while only handle transforms
- * change: GetNumberOfFactorizations() counts them. Changing the input, the region, the weights,
- * the order or the solver refactors.
+ * Input: polygons (split into triangle fans for the operator). Points at the same position,
+ * up to rounding, are one surface vertex (MergeCoincidentPoints), so seams and soups edit as
+ * one surface. Output: the input with the region's points moved, all point and cell data
+ * passed through, normals refreshed near the edit, and the EditRole point array. On bad input
+ * the filter reports an error, passes the input through and sets GetErrorCode() to
+ * vtkErrorCode::UserError until an update succeeds. Documentation/filter.md has the guide.
  *
- * Input requirements: polygons (quads and other polygons are split into triangle fans for the
- * operator; the output keeps the input's cells). Points that share a position, up to rounding,
- * are treated as one surface vertex (MergeCoincidentPoints, on by default), so texture seams,
- * triangle soups and the seams of parallel pieces edit as one surface. Points no polygon uses
- * are never edited.
- *
- * CommitEdit() makes the current result the rest shape of the next edit without touching the
- * pipeline connection (as CGAL's overwrite_initial_geometry()); UndoCommit() goes back one
- * commit. A new input forgets the commits.
- *
- * Under MPI, use vtkPLaplacianDeformationFilter.
- *
- * Output: the input with moved points. All point and cell data pass through; point and cell
- * normals are recomputed; the optional EditRole point array classifies each point as 0 fixed,
- * 1 anchor, 2 free or 3 handle (the paper's Fig. 2). On bad input the filter reports an error
- * and passes the input through unchanged, and GetErrorCode() returns vtkErrorCode::UserError
- * until the next update that succeeds. A region that is likely a mistake (a handle centre away
- * from the surface, a handle or ROI of one vertex, an ROI that swallows its whole connected
- * component) draws a warning once per region.
+ * @sa vtkPLaplacianDeformationFilter vtkDeformationHandleWidget
  */
 #ifndef vtkLaplacianDeformationFilter_h
 #define vtkLaplacianDeformationFilter_h
@@ -238,23 +217,15 @@ public:
   vtkGetMacro(OperatorOrder, int);
 
   /**
-   * How the differential coordinates follow the local rotations of the edit, so that details
-   * keep their orientation:
+   * How the differential coordinates follow the edit's local rotations:
    * - None (default): they keep their global orientation (Section 3);
-   * - Explicit: each is rotated by the rotation of a local frame built on smooth normals of a
-   *   reference edit (Sections 4 and 7);
-   * - Implicit: linearized similarity transforms are solved for together with the shape
-   *   (Section 5; see ImplicitFormulation); one larger coupled system, factored once per
-   *   region, then by default one as-rigid-as-possible step (see PreserveDetailScale).
+   * - Explicit: each turns with a local frame on smooth normals of a reference edit (Sections
+   *   4 and 7);
+   * - Implicit: linearized transforms solved for with the shape (Section 5; see
+   *   ImplicitFormulation and PreserveDetailScale), one coupled system a region;
    * - AsRigidAsPossible: the local-global iteration of Sorkine and Alexa (2007), beyond the
-   *   paper: each detail follows the best rotation of its one-ring, with the handles and the
-   *   fixed part as hard constraints (anchors play no part). The best quality on large
-   *   rotations; each update iterates (see ARAPIterations and Convergence) from the previous
-   *   result (see Extrapolation), so the shape keeps converging during a drag.
-   * Switching among the first three never refactors the Laplacian system; the first implicit
-   * solve of a region factors the coupled system and the rigid step's Laplacian. The
-   * as-rigid-as-possible mode factors its own square system (the weighted Laplacian of the
-   * free vertices) once per region.
+   *   paper; the best quality on large rotations; each update iterates on from the last.
+   * Switching among the first three never refactors the Laplacian system.
    */
   vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
   vtkGetMacro(RotationMode, int);
@@ -275,17 +246,11 @@ public:
   vtkGetMacro(ARAPIterations, int);
 
   /**
-   * As-rigid-as-possible mode: a handle is being dragged (set by vtkDeformationHandleWidget
-   * during a drag, and by its ParaView panel). Meanwhile each update runs at most
-   * DragARAPIterations, so every frame costs about the same: at 30k vertices, 2 iterations
-   * (14 ms) instead of 20 (150 ms) on the drag's first frames, when the extrapolated guess has
-   * no velocity yet. The drag's later frames need no more (they start from the extrapolated
-   * guess). Turning it on changes only the updates that follow, so it does not mark the filter
-   * modified. Turning it off does, and the update after the drag settles the shape: it runs
-   * ARAPIterations in full, without the Convergence test, which the slow tail a drag leaves
-   * would pass at once (bunny, 30k, a 20-step drag: 1.047x the converged energy at its end;
-   * after the release 1.046x in 1 iteration with the test, 1.013x in 20 without it, 0.15 s).
-   * Default off.
+   * As-rigid-as-possible mode: a handle is being dragged (vtkDeformationHandleWidget and its
+   * ParaView panel set it). Meanwhile each update runs at most DragARAPIterations, so every
+   * frame costs about the same. Turning it on does not mark the filter modified; turning it off
+   * does, and the next update settles the shape: ARAPIterations in full, without the
+   * Convergence test, which the slow tail a drag leaves would pass at once. Default off.
    */
   void SetDragging(vtkTypeBool dragging);
   vtkGetMacro(Dragging, vtkTypeBool);
@@ -316,11 +281,9 @@ public:
 
   /**
    * As-rigid-as-possible mode: an update that continues the last one with moved handles starts
-   * from the last result moved on by the last update's change, a constant-velocity guess during
-   * a drag (and a momentum step, stable for the local-global iteration). At 30k vertices a
-   * smooth drag then ends within 4% of the converged energy in 2 iterations a step instead of
-   * 11. With the handles held still, updates iterate plainly, so the shape settles. Default on;
-   * off, each update starts from the last result.
+   * from the last result moved on by the last update's change (a constant-velocity guess during
+   * a drag); with the handles held still, updates iterate plainly, so the shape settles.
+   * Default on; off, each update starts from the last result.
    */
   vtkSetMacro(Extrapolation, vtkTypeBool);
   vtkGetMacro(Extrapolation, vtkTypeBool);
@@ -344,13 +307,10 @@ public:
   vtkGetMacro(NumberOfIterations, int);
 
   /**
-   * Implicit mode: follow the linear solve with one as-rigid-as-possible step (each vertex's
-   * best rotation of its one-ring, then one solve of the cotangent or uniform Laplacian with
-   * the handles and the fixed part held). Linearized rotations I + [h]x lengthen details by
-   * about 1 + angle^2 / 2, so large turns swell the edit (the cactus's 70-degree turn: area
-   * 1.23 without, 1.02 with). Default on. Off gives the linear method alone, whose handle
-   * moves cost a small dense product; on, a move also costs the local step and two
-   * triangular solves of a second, Laplacian factor (factored with the implicit system).
+   * Implicit mode: follow the linear solve with one as-rigid-as-possible step, which takes out
+   * the growth of details that linearized rotations cause under large turns (the cactus's
+   * 70-degree turn: area 1.23 without, 1.02 with). Default on. Off, a move is a small dense
+   * product; on, it also costs a local step and the solves of a second, Laplacian factor.
    */
   vtkSetMacro(PreserveDetailScale, vtkTypeBool);
   vtkGetMacro(PreserveDetailScale, vtkTypeBool);
@@ -365,10 +325,8 @@ public:
   /**
    * Implicit mode's energy. Per edge (default): the paper's fitted transforms, as linearized
    * rotations, matched against every one-ring edge. Paper: Section 5 as published, one residual
-   * per vertex (its Laplacian coordinate) and similarity transforms. The paper's energy leaves
-   * bending nearly free where the constraints hold the region weakly: measured on Armadillo's
-   * hand, a finger next to the handle moved 2.8 times as far as the handle and swelled, and the
-   * cactus's area grew threefold; per edge, it follows the handle as the other modes do.
+   * per vertex and similarity transforms, which leaves bending nearly free where the region is
+   * held weakly (Armadillo's finger next to the handle moved 2.8 times as far as the handle).
    */
   vtkSetClampMacro(ImplicitFormulation, int, IMPLICIT_PER_EDGE, IMPLICIT_PAPER);
   vtkGetMacro(ImplicitFormulation, int);
@@ -404,26 +362,23 @@ public:
 
   /**
    * CHOLMOD's fill-reducing ordering: automatic (default: AMD below 300,000 unknowns, METIS
-   * from there and for the implicit mode's 3 x 3 block system, as measured in the README), AMD,
-   * METIS or CHOLMOD's nested dissection. SimplicialLDLT always uses AMD.
+   * from there and for the implicit mode's 3 x 3 block system), AMD, METIS or CHOLMOD's nested
+   * dissection. SimplicialLDLT always uses AMD.
    */
   vtkSetClampMacro(Ordering, int, ORDERING_AUTOMATIC, ORDERING_NESTED_DISSECTION);
   vtkGetMacro(Ordering, int);
 
   /**
-   * Largest factor to attempt, in megabytes. CHOLMOD's analysis predicts the factor's size
-   * before it is computed; a larger one is refused with an error, so that a huge region fails
-   * clearly instead of exhausting memory. 0 (the default) means 80% of the physical memory
-   * available when the factorization starts. (SimplicialLDLT cannot predict its size.) Under
-   * MPI with MUMPS built in, such a factor is spread across the processes instead.
+   * Largest factor to attempt, in megabytes: CHOLMOD predicts a factor's size, and a larger one
+   * is refused with an error instead of exhausting memory (under MPI with MUMPS, spread across
+   * the processes). 0 (the default): 80% of the physical memory available.
    */
   vtkSetClampMacro(MaximumFactorMemory, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumFactorMemory, double);
 
   /**
-   * Treat input points at the same position as one surface vertex, so that texture seams and
-   * triangle soups edit as one surface. Positions equal to 1e-10 of the region's size in every
-   * coordinate are the same: copies computed separately differ by rounding. Default on.
+   * Treat input points at the same position (to 1e-10 of the region's size) as one surface
+   * vertex, so that texture seams and triangle soups edit as one surface. Default on.
    */
   vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
   vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
@@ -438,10 +393,9 @@ public:
   vtkBooleanMacro(GenerateEditRoles, vtkTypeBool);
 
   /**
-   * Give the EditRole array an indexed lookup table of the paper's Fig. 2 colours (fixed grey,
-   * anchors red, free green, handle yellow), so that a default vtkPolyDataMapper shows the roles.
-   * A mapper colours by an array's own table in preference to its own, so turn this off where
-   * the application manages colour maps (the ParaView plugin does). Default on.
+   * Give the EditRole array an indexed lookup table of the paper's Fig. 2 colours, so that a
+   * default vtkPolyDataMapper shows the roles; turn it off where the application manages colour
+   * maps (the ParaView plugin does). Default on.
    */
   vtkSetMacro(RoleColors, vtkTypeBool);
   vtkGetMacro(RoleColors, vtkTypeBool);
@@ -482,14 +436,10 @@ public:
   void RemoveAllHandleTransforms();
 
   /**
-   * Handle group `group`'s motion (group 1 and above; array value 2 + group), as
-   * HandleTranslation and HandleRotation move group 0: a translation in mesh units, applied
-   * after rotation angles in degrees about x, then y, then z, about the group's rest centroid
-   * (GetHandleGroupCenter). A group with a transform object follows that instead. This is how
-   * ParaView's proxy and pvpython move further groups (property HandleGroupMotions, seven
-   * numbers a group; `group` is a vtkIdType because the proxy sends doubles, which ParaView's
-   * client-server layer converts to 64-bit integers but not to int). CommitEdit sets every
-   * motion back to rest.
+   * Handle group `group`'s motion (group 1 and above), as HandleTranslation and HandleRotation
+   * move group 0, about the group's rest centroid (GetHandleGroupCenter); a transform object
+   * takes precedence. ParaView's HandleGroupMotions property calls it (`group` is a vtkIdType:
+   * ParaView's client-server layer converts doubles to 64-bit integers, not to int).
    */
   void SetHandleGroupMotion(vtkIdType group, double translationX, double translationY,
     double translationZ, double rotationX, double rotationY, double rotationZ);
@@ -502,10 +452,9 @@ public:
 
   /**
    * Make the current result the rest shape of the next edit, keeping the input connection:
-   * the filter updates, keeps the output's points, sets HandleTranslation and HandleRotation to
-   * zero and moves HandleCenter with the handle, then fires EditCommittedEvent. Handle
-   * transform objects are the caller's to reset: every vtkDeformationHandleWidget paired with
-   * the filter does, on that event. A new input forgets all commits.
+   * the filter updates, keeps the output's points, sets the handle motions to rest, moves
+   * HandleCenter with the handle and fires EditCommittedEvent (paired widgets reset their
+   * transforms on it). A new input forgets all commits.
    */
   void CommitEdit();
   /**
@@ -545,27 +494,21 @@ public:
    */
   int GetNumberOfHandleGroups();
 
+  ///@{
   /**
-   * Numeric factorizations completed since construction.
+   * Numeric factorizations completed since construction, and those attempted, failed ones
+   * included: a failed one is not attempted again until something it depends on changes.
    */
   vtkGetMacro(NumberOfFactorizations, int);
-
-  /**
-   * Factorizations attempted since construction, failed ones included. A failed one is not
-   * attempted again until something it depends on changes (the region, the system's options,
-   * the rotation mode or formulation), so that a region that cannot be factored does not cost
-   * its failure on every update.
-   */
   vtkGetMacro(NumberOfFactorizationAttempts, int);
+  ///@}
 
   ///@{
   /**
-   * Facts of the last update: ROI and handle sizes; seconds spent building the surface graph
-   * (merging coincident points, adjacency; only when the input changed); seconds spent on the
-   * region's setup (selection, assembly, analysis, factorization and the precomputed handle
-   * responses; 0 when the cached factor was reused), on the sparse ordering analysis and on the
-   * numeric factorization alone; and seconds spent solving and writing the output for the
-   * current handle transforms.
+   * Facts of the last update: ROI and handle sizes; seconds building the surface graph (only
+   * when the input changed); seconds of the region's setup (0 when the cached factor was
+   * reused), of its ordering analysis and of its numeric factorization alone; and seconds
+   * solving and writing the output for the current handle transforms.
    */
   vtkGetMacro(NumberOfROIVertices, int);
   vtkGetMacro(NumberOfHandleVertices, int);
@@ -588,22 +531,18 @@ public:
 
   /**
    * Vertices of the surface graph the current region was selected on: the part of the input the
-   * edit can reach (the ROI, the rings around it and a margin), not the whole input, so that
-   * the graph, the caches and the normal refresh cost memory and time in proportion to the
-   * region. Only one pass over the input's points and polygons sees the rest.
+   * edit can reach, so that the graph and the caches cost in proportion to the region.
    */
   vtkGetMacro(NumberOfSurfaceVertices, int);
 
+  ///@{
   /**
-   * Megabytes of the factors held for the current region (CHOLMOD's prediction, or MUMPS's
-   * factor on all processes together; 0 if unknown).
+   * Megabytes of the factors held for the current region (0 if unknown), and whether they are
+   * spread across MPI processes (MUMPS).
    */
   vtkGetMacro(FactorMemory, double);
-
-  /**
-   * Whether the current region's factor is spread across MPI processes (MUMPS).
-   */
   vtkGetMacro(FactoredAcrossProcesses, vtkTypeBool);
+  ///@}
 
   vtkMTimeType GetMTime() override;
 

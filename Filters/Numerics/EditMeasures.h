@@ -1,4 +1,4 @@
-// How good an edit is, as the project judges it (the README's quality tables and the tests):
+// How good an edit is, as the project judges it (Documentation/quality.md and the tests):
 //  - Energy: the as-rigid-as-possible energy of the result against the rest shape. For each
 //    region vertex, the best rotation R_i of its one-ring and sum_j w_ij |e'_ij - R_i e_ij|^2,
 //    summed and divided by sum w_ij |e_ij|^2 (clamped cotangent weights). 0 for a rigid motion.

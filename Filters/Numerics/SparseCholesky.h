@@ -27,7 +27,7 @@ enum class SolverBackend
 /// Fill-reducing orderings (CHOLMOD only; SimplicialLDLT always uses AMD).
 enum class FillOrdering
 {
-  Automatic,       // AMD below 300k unknowns, METIS from there or for block systems (README)
+  Automatic,       // AMD below 300k unknowns, METIS from there or for block systems (Documentation/performance.md)
   AMD,             // approximate minimum degree
   METIS,           // METIS nested dissection
   NestedDissection // CHOLMOD's own nested dissection (METIS-based, constrained)
