@@ -1,16 +1,17 @@
 // Benchmark of setup and handle moves; prints one JSON line.
 //
-//   LaplacianEditingBenchmark MESH|--sphere N [--vertex V|largest | --point X Y Z] [--roi F]
+//   LaplacianEditingBenchmark MESH|--sphere N|--grid N [--vertex V|largest | --point X Y Z] [--roi F]
 //     [--handle F] [--translate DX DY DZ] [--moves N] [--order 1|2]
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
 //     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--linear]
-//     [--no-extrapolation]
+//     [--no-extrapolation] [--absolute]
 //     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
-// scaling curve). --vertex largest picks the first vertex of the largest connected component.
-// Radii (--roi, default 0.25; --handle, default 0.03) and the translation (default 0 0 0.05)
-// are fractions of the bounding-box diagonal. Each move sets a new handle transform and
+// scaling curve), --grid N a flat square grid of about N points at unit spacing, with the
+// handle at its centre. --vertex largest picks the first vertex of the largest connected
+// component. Radii (--roi, default 0.25; --handle, default 0.03) and the translation (default
+// 0 0 0.05) are fractions of the bounding-box diagonal, or mesh units with --absolute. Each move sets a new handle transform and
 // updates the filter; "move" is the filter's solve and output time, "update" the wall time of
 // the whole Update(). "topology" is building the surface graph (once per input mesh), "setup"
 // the region's selection, assembly, factorization and precomputation (once per region). The line also gives the peak resident memory of the process and the BLAS
@@ -27,10 +28,12 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataConnectivityFilter.h"
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
+#include "vtkTriangleFilter.h"
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
 #include "CGALSurface.h"
@@ -101,6 +104,21 @@ vtkSmartPointer<vtkPolyData> Sphere(double vertices)
   return sphere->GetOutput();
 }
 
+// A flat square grid of about `points` points, unit spacing, triangles with point normals.
+vtkSmartPointer<vtkPolyData> Grid(double points)
+{
+  const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(points))));
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0.0, 0.0, 0.0);
+  plane->SetPoint1(side - 1.0, 0.0, 0.0);
+  plane->SetPoint2(0.0, side - 1.0, 0.0);
+  plane->SetResolution(side - 1, side - 1);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(plane->GetOutputPort());
+  triangles->Update();
+  return triangles->GetOutput();
+}
+
 vtkIdType FirstVertexOfLargestComponent(vtkPolyData* mesh)
 {
   vtkNew<vtkPolyDataConnectivityFilter> connectivity;
@@ -129,6 +147,8 @@ struct Options
 {
   std::string Mesh;
   double SphereVertices = 0.0;
+  double GridPoints = 0.0;
+  bool Absolute = false;
   vtkIdType Vertex = 0;
   bool LargestComponent = false;
   bool UsePoint = false;
@@ -151,16 +171,18 @@ struct Options
   bool Help = false;
 };
 
-const char* const Usage = R"(usage: LaplacianEditingBenchmark MESH|--sphere N [options]
+const char* const Usage = R"(usage: LaplacianEditingBenchmark MESH|--sphere N|--grid N [options]
 
-Times one edit of MESH (OBJ, PLY, STL, VTP, VTK, OFF) or of a generated sphere of about N
-vertices: setup (selection, assembly, factorization) and handle moves. Prints one JSON line.
+Times one edit of MESH (OBJ, PLY, STL, VTP, VTK, OFF), of a generated sphere of about N
+vertices or of a flat grid of about N points (unit spacing, handle at its centre): setup
+(selection, assembly, factorization) and handle moves. Prints one JSON line.
 
   --vertex V|largest      handle centre on input point V, or on the largest component (0)
   --point X Y Z           handle centre at a point
   --roi F                 ROI radius, a fraction of the bounding-box diagonal (0.25)
   --handle F              handle radius, a fraction of the diagonal (0.03)
   --translate DX DY DZ    the final handle move, a fraction of the diagonal (0 0 0.05)
+  --absolute              radii and translation in mesh units, not fractions of the diagonal
   --moves N               handle moves timed (20)
   --order 1|2             operator order (1)
   --weights uniform|cotangent
@@ -196,6 +218,10 @@ bool Parse(int argc, char* argv[], Options& options)
     }
     else if (arg == "--sphere")
       options.SphereVertices = std::atof(next().c_str());
+    else if (arg == "--grid")
+      options.GridPoints = std::atof(next().c_str());
+    else if (arg == "--absolute")
+      options.Absolute = true;
     else if (arg == "--vertex")
     {
       const std::string value = next();
@@ -252,7 +278,7 @@ bool Parse(int argc, char* argv[], Options& options)
       return false;
     }
   }
-  return !options.Mesh.empty() || options.SphereVertices > 0.0;
+  return !options.Mesh.empty() || options.SphereVertices > 0.0 || options.GridPoints > 0.0;
 }
 
 struct Measurement
@@ -310,11 +336,12 @@ struct Measurement
 Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& options, int mode,
   int iterations)
 {
-  const double diagonal = mesh->GetLength();
+  const double diagonal = options.Absolute ? 1.0 : mesh->GetLength();
   vtkNew<vtkLaplacianDeformationFilter> filter;
   filter->SetInputData(mesh);
   filter->SetHandleCenter(center);
-  filter->SetRadiusUnitsToDiagonalFraction();
+  filter->SetRadiusUnits(options.Absolute ? vtkLaplacianDeformationFilter::RADIUS_ABSOLUTE
+                                          : vtkLaplacianDeformationFilter::RADIUS_DIAGONAL_FRACTION);
   filter->SetROIRadius(options.ROI);
   filter->SetHandleRadius(options.Handle);
   filter->SetOperatorOrder(options.Order);
@@ -456,11 +483,27 @@ int main(int argc, char* argv[])
     return options.Help ? EXIT_SUCCESS : EXIT_FAILURE;
   }
   std::string error;
-  const std::string meshName = options.SphereVertices > 0.0
-    ? "sphere-" + std::to_string(static_cast<long>(options.SphereVertices))
-    : options.Mesh;
-  vtkSmartPointer<vtkPolyData> mesh =
-    options.SphereVertices > 0.0 ? Sphere(options.SphereVertices) : MeshReader::Read(options.Mesh, error);
+  std::string meshName = options.Mesh;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (options.SphereVertices > 0.0)
+  {
+    meshName = "sphere-" + std::to_string(static_cast<long>(options.SphereVertices));
+    mesh = Sphere(options.SphereVertices);
+  }
+  else if (options.GridPoints > 0.0)
+  {
+    meshName = "grid-" + std::to_string(static_cast<long>(options.GridPoints));
+    mesh = Grid(options.GridPoints);
+    if (!options.UsePoint)
+    {
+      options.UsePoint = true; // the grid point nearest the centre
+      options.Point[0] = options.Point[1] = std::round(mesh->GetBounds()[1] / 2.0);
+    }
+  }
+  else
+  {
+    mesh = MeshReader::Read(options.Mesh, error);
+  }
   if (!mesh)
   {
     std::cerr << "error: " << error << "\n";
