@@ -22,6 +22,7 @@ set(private_classes
   Filters/Stages/vtkLaplacianEditSolver
   Filters/Stages/vtkLaplacianHandleMaps
   Filters/Stages/vtkLaplacianNormalRefresher
+  Filters/Stages/vtkLaplacianOutputArray
   Filters/Stages/vtkLaplacianOutputWriter
   Filters/Stages/vtkLaplacianRegionSelector
   Filters/Stages/vtkLaplacianRestShape

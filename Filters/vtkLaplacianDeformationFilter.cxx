@@ -466,16 +466,30 @@ void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* 
 {
   vtkInternals& internals = *this->Internals;
   const Clock::time_point start = Clock::now();
-  internals.Writer.Write(
-    rest, output, internals.Surface, internals.Normals, internals.Solver.GetSolution());
-  this->AddEditRoles(output, internals.Surface.GetRoles());
+  const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
+  vtkLaplacianOutputWriter::Edit edit;
+  edit.Moved = &surface.GetRegionPoints();
+  edit.Solution = &internals.Solver.GetSolution();
+  edit.Center = surface.GetCenter();
+  edit.Scale = surface.GetScale();
+  edit.Normals = &internals.Normals;
+  edit.VertexRest = &surface.GetMesh()->GetPositions();
+  edit.VertexRows = &surface.GetRowOfVertex();
+  edit.RegionVersion = internals.Solver.GetModelVersion();
+  this->WriteEdit(rest, output, &edit);
   internals.Solver.GetFacts().SolveTime += SecondsSince(start);
 }
 
-void vtkLaplacianDeformationFilter::AddEditRoles(vtkPolyData* output, vtkDataArray* roles)
+void vtkLaplacianDeformationFilter::WriteEdit(
+  vtkPolyData* rest, vtkPolyData* output, const vtkLaplacianOutputEdit* edit)
 {
-  vtkLaplacianOutputWriter::AddEditRoles(
-    output, roles, this->GenerateEditRoles != 0, this->RoleColors != 0);
+  this->Internals->Writer.Write(
+    rest, output, edit, this->GenerateEditRoles != 0, this->RoleColors != 0);
+}
+
+vtkIdType vtkLaplacianDeformationFilter::GetNumberOfOutputCopies()
+{
+  return this->Internals->Writer.GetNumberOfCopies();
 }
 
 bool vtkLaplacianDeformationFilter::GetEditState(vtkLaplacianEditState& state) const

@@ -36,6 +36,7 @@ class vtkAlgorithmOutput;
 class vtkDataArray;
 class vtkLinearTransform;
 struct vtkLaplacianEditState;
+struct vtkLaplacianOutputEdit;
 struct vtkLaplacianRegionParameters;
 struct vtkLaplacianSolverOptions;
 namespace LaplacianEditing
@@ -503,6 +504,16 @@ public:
   vtkGetMacro(NumberOfFactorizationAttempts, int);
   ///@}
 
+  /**
+   * Whole copies of a rest array (points, normals, EditRole) the output has taken since
+   * construction. The output's arrays are kept between updates and a handle move rewrites only
+   * the tuples of its region in place, so a move adds none, unless the array the output held
+   * is still held elsewhere (a reference or shallow copy kept by the caller, a downstream output
+   * not yet updated), which is never written: copy on write. A new input, new input content or
+   * a commit copies once.
+   */
+  vtkIdType GetNumberOfOutputCopies();
+
   ///@{
   /**
    * Facts of the last update: ROI and handle sizes; seconds building the surface graph (only
@@ -583,9 +594,11 @@ protected:
   double WholeDiagonal = 0.0;
 
   /**
-   * Adds the EditRole array to the output as GenerateEditRoles and RoleColors say.
+   * Writes `edit` into `output`, a shallow copy of `rest` (null: nothing moved), in place in
+   * the arrays kept from earlier updates (vtkLaplacianOutputWriter), with EditRole as
+   * GenerateEditRoles and RoleColors say.
    */
-  void AddEditRoles(vtkPolyData* output, vtkDataArray* roles);
+  void WriteEdit(vtkPolyData* rest, vtkPolyData* output, const vtkLaplacianOutputEdit* edit);
 
   /**
    * Writes the solved edit into `output` (a shallow copy of `rest`): the moved points, the

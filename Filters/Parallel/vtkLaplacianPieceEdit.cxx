@@ -4,9 +4,6 @@
 #include "vtkLaplacianSurfaceAdapter.h"
 
 #include "vtkDataArray.h"
-#include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <unordered_map>
@@ -83,23 +80,22 @@ void vtkLaplacianPieceEdit::Build(const vtkLaplacianEditState& edit, const Range
     indexOfVertex.emplace(vertices[i], static_cast<int>(i));
   }
   // The moved points' vertices are in the index already, unless a point has no triangle.
-  this->MovedPoints.clear();
-  this->MovedSlots.clear();
-  this->MovedRoles.clear();
+  this->Moved = vtkLaplacianMovedPoints();
   std::vector<int> movedVertices;
-  for (const auto& point : surface.GetRegionPoints())
+  const vtkLaplacianMovedPoints& regionPoints = surface.GetRegionPoints();
+  for (std::size_t i = 0; i < regionPoints.Ids.size(); ++i)
   {
-    const vtkIdType id = pointId(point.first);
+    const vtkIdType id = pointId(regionPoints.Ids[i]);
     if (id >= 0)
     {
-      const int v = region.Vertices[point.second];
+      const int v = region.Vertices[regionPoints.Rows[i]];
       if (indexOfVertex.emplace(v, static_cast<int>(vertices.size())).second)
       {
         vertices.push_back(v);
       }
-      this->MovedPoints.push_back(id);
+      this->Moved.Ids.push_back(id);
       movedVertices.push_back(indexOfVertex[v]);
-      this->MovedRoles.push_back(static_cast<int>(region.Roles[point.second]));
+      this->Moved.Roles.push_back(regionPoints.Roles[i]);
     }
   }
   const le::SurfaceMesh& mesh = *surface.GetMesh();
@@ -118,11 +114,12 @@ void vtkLaplacianPieceEdit::Build(const vtkLaplacianEditState& edit, const Range
   }
   for (const int index : movedVertices)
   {
-    this->MovedSlots.push_back(this->SlotOfVertex[index]);
+    this->Moved.Rows.push_back(this->SlotOfVertex[index]);
   }
   this->Center = surface.GetCenter();
   this->Scale = surface.GetScale();
   this->Affine = affine ? edit.Editor->GetAffineRows(this->Rows) : le::AffineRows();
+  ++this->Version;
 }
 
 bool vtkLaplacianPieceEdit::GetAffineParameters(
@@ -158,9 +155,9 @@ std::vector<double> vtkLaplacianPieceEdit::Pack() const
   PackArray(message, rest);
   PackArray(message, this->Rows);
   PackArray(message, this->SlotOfVertex);
-  PackArray(message, this->MovedPoints);
-  PackArray(message, this->MovedSlots);
-  PackArray(message, this->MovedRoles);
+  PackArray(message, this->Moved.Ids);
+  PackArray(message, this->Moved.Rows);
+  PackArray(message, this->Moved.Roles);
   this->Normals.VisitArrays([&](const auto& values) { PackArray(message, values); });
   PackArray(message, Flatten(this->Affine.Offsets));
   PackArray(message, Flatten(this->Affine.Responses));
@@ -181,9 +178,10 @@ bool vtkLaplacianPieceEdit::Unpack(const std::vector<double>& message)
   read(rest);
   read(this->Rows);
   read(this->SlotOfVertex);
-  read(this->MovedPoints);
-  read(this->MovedSlots);
-  read(this->MovedRoles);
+  read(this->Moved.Ids);
+  read(this->Moved.Rows);
+  read(this->Moved.Roles);
+  ++this->Version;
   this->Normals.VisitArrays(read);
   read(offsets);
   read(responses);
@@ -204,30 +202,21 @@ bool vtkLaplacianPieceEdit::Unpack(const std::vector<double>& message)
     this->Affine.Responses.rows() == (this->Affine.Coupled ? 3 : 1) * this->Affine.Offsets.rows();
 }
 
-vtkSmartPointer<vtkSignedCharArray> vtkLaplacianPieceEdit::Write(
-  vtkPolyData* input, const le::Positions& positions, vtkPolyData* output) const
+bool vtkLaplacianPieceEdit::GetEdit(
+  const le::Positions& positions, vtkLaplacianOutputEdit& edit) const
 {
-  output->ShallowCopy(input);
-  const vtkIdType count = input->GetNumberOfPoints();
-  vtkSmartPointer<vtkSignedCharArray> roles = vtkLaplacianSurfaceAdapter::NewRoles(count);
   // A piece whose index holds no region vertex keeps its points and normals.
   if (this->Rows.empty() || positions.rows() != static_cast<Eigen::Index>(this->Rows.size()))
   {
-    return roles;
+    return false;
   }
-  if (!this->MovedPoints.empty())
-  {
-    vtkNew<vtkPoints> points;
-    points->SetDataType(input->GetPoints()->GetDataType());
-    points->DeepCopy(input->GetPoints());
-    for (std::size_t i = 0; i < this->MovedPoints.size(); ++i)
-    {
-      const le::Vector3 p = positions.row(this->MovedSlots[i]).transpose() / this->Scale + this->Center;
-      points->SetPoint(this->MovedPoints[i], p.data());
-      roles->SetValue(this->MovedPoints[i], static_cast<signed char>(this->MovedRoles[i]));
-    }
-    output->SetPoints(points);
-  }
-  this->Normals.Refresh(output, this->Rest, this->SlotOfVertex, positions);
-  return roles;
+  edit.Moved = &this->Moved;
+  edit.Solution = &positions;
+  edit.Center = this->Center;
+  edit.Scale = this->Scale;
+  edit.Normals = &this->Normals;
+  edit.VertexRest = &this->Rest;
+  edit.VertexRows = &this->SlotOfVertex;
+  edit.RegionVersion = this->Version;
+  return true;
 }

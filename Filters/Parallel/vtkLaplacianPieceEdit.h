@@ -14,9 +14,9 @@
 
 #include "AffineRows.h"
 #include "vtkLaplacianNormalRefresher.h"
+#include "vtkLaplacianOutputWriter.h"
 
-#include "vtkSignedCharArray.h" // for the EditRole array
-#include "vtkSmartPointer.h"
+#include <cstdint>
 
 #include <vector>
 
@@ -80,10 +80,9 @@ public:
   std::vector<double> Pack() const;
   bool Unpack(const std::vector<double>& message);
 
-  /// `input` with the moved points and the refreshed normals in `output`, for the rows at
-  /// `positions` (the core's coordinates); returns the piece's EditRole array.
-  vtkSmartPointer<vtkSignedCharArray> Write(
-    vtkPolyData* input, const LaplacianEditing::Positions& positions, vtkPolyData* output) const;
+  /// The piece's edit for the rows at `positions` (the core's coordinates), as the output
+  /// writer takes it; false when the piece has none (it keeps its points and normals).
+  bool GetEdit(const LaplacianEditing::Positions& positions, vtkLaplacianOutputEdit& edit) const;
 
 private:
   // The core's frame: input = core / Scale + Center.
@@ -94,9 +93,8 @@ private:
   std::vector<LaplacianEditing::Vector3> Rest;
   std::vector<int> SlotOfVertex;
   // The piece's points in the region: their ids in the piece, slots in Rows and roles.
-  std::vector<vtkIdType> MovedPoints;
-  std::vector<int> MovedSlots;
-  std::vector<int> MovedRoles;
+  vtkLaplacianMovedPoints Moved;
+  std::uint64_t Version = 0; // of the share, for the writer
   vtkLaplacianNormalRefresher Normals;
   LaplacianEditing::AffineRows Affine;
 };

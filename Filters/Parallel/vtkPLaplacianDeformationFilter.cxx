@@ -406,7 +406,10 @@ void vtkPLaplacianDeformationFilter::WritePieces(vtkPolyData* input, vtkPolyData
     positions.resize(static_cast<Eigen::Index>(internals.Piece.GetRows().size()), 3);
     controller->Receive(positions.data(), positions.size(), 0, PositionsTag);
   }
-  this->AddEditRoles(output, internals.Piece.Write(input, positions, output));
+  output->ShallowCopy(input);
+  vtkLaplacianOutputEdit pieceEdit;
+  this->WriteEdit(
+    input, output, internals.Piece.GetEdit(positions, pieceEdit) ? &pieceEdit : nullptr);
 }
 
 void vtkPLaplacianDeformationFilter::SharePieces(

@@ -18,27 +18,31 @@ namespace le = LaplacianEditing;
 
 namespace
 {
-// Copies a normals array and recomputes the tuples listed in `ids`.
+// Writes normalOf(r), normalized, at tuple ids[r] of `normals` (a 3-component array).
 template <typename NormalOf>
-void RefreshNormalsArray(vtkDataSetAttributes* attributes, const std::vector<vtkIdType>& ids,
-  NormalOf normalOf)
+void WriteNormals(vtkDataArray* normals, const std::vector<vtkIdType>& ids, NormalOf normalOf)
 {
-  vtkDataArray* stale = attributes->GetNormals();
-  if (!stale || stale->GetNumberOfComponents() != 3)
-  {
-    return;
-  }
-  vtkSmartPointer<vtkDataArray> fresh = vtk::TakeSmartPointer(stale->NewInstance());
-  fresh->DeepCopy(stale);
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType r = begin; r < end; ++r)
     {
       const le::Vector3 n = normalOf(r).normalized();
-      fresh->SetTuple3(ids[r], n[0], n[1], n[2]);
+      normals->SetTuple3(ids[r], n[0], n[1], n[2]);
     }
   });
-  attributes->SetNormals(fresh);
 }
+
+// Vertex v's position: its solution row's, or its rest one outside the region.
+struct PositionOf
+{
+  const std::vector<le::Vector3>& Rest;
+  const std::vector<int>& RowOfVertex;
+  const le::Positions& Solution;
+  le::Vector3 operator()(int v) const
+  {
+    const int k = this->RowOfVertex[v];
+    return k >= 0 ? le::Vector3(this->Solution.row(k).transpose()) : this->Rest[v];
+  }
+};
 }
 
 void vtkLaplacianNormalRefresher::Index(vtkPolyData* input, const vtkLaplacianSurfaceAdapter& surface)
@@ -101,36 +105,38 @@ void vtkLaplacianNormalRefresher::Index(vtkPolyData* input, const vtkLaplacianSu
   }
 }
 
-void vtkLaplacianNormalRefresher::Refresh(vtkPolyData* output, const std::vector<le::Vector3>& rest,
-  const std::vector<int>& rowOfVertex, const le::Positions& solution) const
+void vtkLaplacianNormalRefresher::WritePointNormals(vtkDataArray* normals,
+  const std::vector<le::Vector3>& rest, const std::vector<int>& rowOfVertex,
+  const le::Positions& solution) const
 {
-  auto position = [&](int v) -> le::Vector3 {
-    const int k = rowOfVertex[v];
-    return k >= 0 ? le::Vector3(solution.row(k).transpose()) : rest[v];
-  };
-  if (output->GetPointData()->GetNormals())
-  {
-    // Each triangle's (area-weighted) normal once, then their sums around each point.
-    std::vector<le::Vector3> triangleNormals(this->TriangleVertices.size() / 3);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
-      [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType s = begin; s < end; ++s)
-        {
-          const int* triangle = this->TriangleVertices.data() + 3 * s;
-          const le::Vector3 origin = position(triangle[0]);
-          triangleNormals[s] = (position(triangle[1]) - origin).cross(position(triangle[2]) - origin);
-        }
-      });
-    RefreshNormalsArray(output->GetPointData(), this->Points, [&](vtkIdType r) {
-      le::Vector3 n = le::Vector3::Zero();
-      for (int j = this->PointTriangleOffsets[r]; j < this->PointTriangleOffsets[r + 1]; ++j)
+  // Each triangle's (area-weighted) normal once, then their sums around each point.
+  const PositionOf position{ rest, rowOfVertex, solution };
+  std::vector<le::Vector3> triangleNormals(this->TriangleVertices.size() / 3);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(triangleNormals.size()),
+    [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType s = begin; s < end; ++s)
       {
-        n += triangleNormals[this->PointTriangles[j]];
+        const int* triangle = this->TriangleVertices.data() + 3 * s;
+        const le::Vector3 origin = position(triangle[0]);
+        triangleNormals[s] = (position(triangle[1]) - origin).cross(position(triangle[2]) - origin);
       }
-      return n;
     });
-  }
-  RefreshNormalsArray(output->GetCellData(), this->Cells, [&](vtkIdType r) {
+  WriteNormals(normals, this->Points, [&](vtkIdType r) {
+    le::Vector3 n = le::Vector3::Zero();
+    for (int j = this->PointTriangleOffsets[r]; j < this->PointTriangleOffsets[r + 1]; ++j)
+    {
+      n += triangleNormals[this->PointTriangles[j]];
+    }
+    return n;
+  });
+}
+
+void vtkLaplacianNormalRefresher::WriteCellNormals(vtkDataArray* normals,
+  const std::vector<le::Vector3>& rest, const std::vector<int>& rowOfVertex,
+  const le::Positions& solution) const
+{
+  const PositionOf position{ rest, rowOfVertex, solution };
+  WriteNormals(normals, this->Cells, [&](vtkIdType r) {
     const int* corners = this->CellVertices.data() + this->CellVertexOffsets[r];
     const int size = this->CellVertexOffsets[r + 1] - this->CellVertexOffsets[r];
     le::Vector3 n = le::Vector3::Zero();

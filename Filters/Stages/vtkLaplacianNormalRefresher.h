@@ -4,9 +4,9 @@
  *          (not wrapped)
  *
  * Per region, Index finds the points whose normals the edit can change (the ROI and its ring),
- * the triangles around them, and the polygons with a corner in the ROI. Refresh then copies the
- * input's normals and recomputes only those tuples, so all other normals stay bit-identical and
- * a handle move costs time in proportion to the region. The index refers to vertices only by
+ * the triangles around them, and the polygons with a corner in the ROI. The Write methods then
+ * recompute only those tuples (vtkLaplacianOutputArray keeps the rest), so all other normals
+ * stay bit-identical and a handle move costs time in proportion to the region. The index refers to vertices only by
  * number, so Restrict can cut out the part that one piece of a distributed surface needs.
  */
 #ifndef vtkLaplacianNormalRefresher_h
@@ -19,6 +19,7 @@
 #include <functional>
 #include <vector>
 
+class vtkDataArray;
 class vtkLaplacianSurfaceAdapter;
 class vtkPolyData;
 
@@ -29,10 +30,17 @@ public:
   /// the surface's.
   void Index(vtkPolyData* input, const vtkLaplacianSurfaceAdapter& surface);
 
-  /// Refreshes the output's normals (where it has any) with vertex v at rest[v], or at
-  /// solution's row rowOfVertex[v] where that is not -1 (the moved region), in the core's
-  /// coordinates (normals do not depend on the frame's translation and scale).
-  void Refresh(vtkPolyData* output, const std::vector<LaplacianEditing::Vector3>& rest,
+  /// The output point ids and cell ids whose normals the edit can change.
+  const std::vector<vtkIdType>& GetPointIds() const { return this->Points; }
+  const std::vector<vtkIdType>& GetCellIds() const { return this->Cells; }
+
+  /// Writes the point normals (at GetPointIds) and the polygon normals (at GetCellIds) of the
+  /// edited surface into `normals`, with vertex v at rest[v], or at solution's row
+  /// rowOfVertex[v] where that is not -1 (the moved region), in the core's coordinates
+  /// (normals do not depend on the frame's translation and scale).
+  void WritePointNormals(vtkDataArray* normals, const std::vector<LaplacianEditing::Vector3>& rest,
+    const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution) const;
+  void WriteCellNormals(vtkDataArray* normals, const std::vector<LaplacianEditing::Vector3>& rest,
     const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution) const;
 
   /// The part of the index on the points and polygons that `pointId` and `cellId` map to

@@ -1,15 +1,16 @@
 #include "vtkLaplacianOutputWriter.h"
 
+#include "EditRegion.h"
 #include "vtkLaplacianNormalRefresher.h"
-#include "vtkLaplacianSurfaceAdapter.h"
 
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkLookupTable.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkSmartPointer.h"
+#include "vtkSignedCharArray.h"
 #include "vtkVariant.h"
 
 namespace le = LaplacianEditing;
@@ -37,45 +38,95 @@ vtkSmartPointer<vtkLookupTable> NewRoleColors()
   return table;
 }
 
-// A copy of `points` with the region's points moved to `solution`.
-vtkSmartPointer<vtkPoints> MovePoints(
-  vtkPoints* points, const vtkLaplacianSurfaceAdapter& surface, const le::Positions& solution)
+// The normals array of `attributes` the writer refreshes: three components, or none.
+vtkDataArray* RestNormals(vtkDataSetAttributes* attributes)
 {
-  auto moved = vtkSmartPointer<vtkPoints>::New();
-  moved->SetDataType(points->GetDataType());
-  moved->DeepCopy(points);
-  const auto& roiPoints = surface.GetRegionPoints();
-  vtkSMPTools::For(0, static_cast<vtkIdType>(roiPoints.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType r = begin; r < end; ++r)
-    {
-      const le::Vector3 p = surface.Denormalize(solution.row(roiPoints[r].second).transpose());
-      moved->SetPoint(roiPoints[r].first, p.data());
-    }
-  });
-  return moved;
+  vtkDataArray* normals = attributes->GetNormals();
+  return normals && normals->GetNumberOfComponents() == 3 ? normals : nullptr;
 }
 }
 
-void vtkLaplacianOutputWriter::Write(vtkPolyData* rest, vtkPolyData* output,
-  const vtkLaplacianSurfaceAdapter& surface, const vtkLaplacianNormalRefresher& normals,
-  const le::Positions& solution) const
+void vtkLaplacianOutputWriter::Write(
+  vtkPolyData* rest, vtkPolyData* output, const Edit* edit, bool roles, bool colors)
 {
-  output->SetPoints(MovePoints(rest->GetPoints(), surface, solution));
-  normals.Refresh(output, surface.GetMesh()->GetPositions(), surface.GetRowOfVertex(), solution);
-}
-
-void vtkLaplacianOutputWriter::AddEditRoles(
-  vtkPolyData* output, vtkDataArray* roles, bool generate, bool colors)
-{
-  if (!generate)
+  static const std::vector<vtkIdType> none;
+  const std::uint64_t key = ++this->Writes;
+  const std::vector<vtkIdType>& moved = edit ? edit->Moved->Ids : none;
+  output->SetPoints(this->Points.Update(rest->GetPoints(), moved, key, [&](vtkDataArray* points) {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const le::Vector3 p =
+          edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
+        points->SetTuple(moved[i], p.data());
+      }
+    });
+  }));
+  const vtkLaplacianNormalRefresher* normals = edit ? edit->Normals : nullptr;
+  if (vtkDataArray* pointNormals = RestNormals(rest->GetPointData()))
+  {
+    output->GetPointData()->SetNormals(this->PointNormals.Update(pointNormals,
+      normals ? normals->GetPointIds() : none, key, [&](vtkDataArray* array) {
+        normals->WritePointNormals(array, *edit->VertexRest, *edit->VertexRows, *edit->Solution);
+      }));
+  }
+  if (vtkDataArray* cellNormals = RestNormals(rest->GetCellData()))
+  {
+    output->GetCellData()->SetNormals(this->CellNormals.Update(cellNormals,
+      normals ? normals->GetCellIds() : none, key, [&](vtkDataArray* array) {
+        normals->WriteCellNormals(array, *edit->VertexRest, *edit->VertexRows, *edit->Solution);
+      }));
+  }
+  if (!roles)
   {
     return;
   }
-  roles->SetLookupTable(colors ? NewRoleColors() : nullptr);
+  vtkDataArray* editRoles = this->UpdateRoles(rest->GetNumberOfPoints(), edit);
+  if (!this->RoleColors)
+  {
+    this->RoleColors = NewRoleColors();
+  }
+  editRoles->SetLookupTable(colors ? this->RoleColors.Get() : nullptr);
   vtkPointData* pointData = output->GetPointData();
-  pointData->AddArray(roles);
+  pointData->AddArray(editRoles);
   if (!pointData->GetScalars())
   {
     pointData->SetActiveScalars("EditRole"); // a default mapper then shows the roles
   }
+}
+
+vtkDataArray* vtkLaplacianOutputWriter::UpdateRoles(vtkIdType count, const Edit* edit)
+{
+  if (!this->FixedRoles || this->FixedRoles->GetNumberOfTuples() != count)
+  {
+    this->FixedRoles = vtkSmartPointer<vtkSignedCharArray>::New();
+    this->FixedRoles->SetName("EditRole");
+    this->FixedRoles->SetNumberOfTuples(count);
+    this->FixedRoles->FillValue(static_cast<signed char>(le::VertexRole::Fixed));
+  }
+  static const std::vector<vtkIdType> none;
+  const std::vector<vtkIdType>& moved = edit ? edit->Moved->Ids : none;
+  return this->Roles.Update(this->FixedRoles, moved, edit ? edit->RegionVersion : 0,
+    [&](vtkDataArray* array) {
+      auto* roles = vtkArrayDownCast<vtkSignedCharArray>(array);
+      for (std::size_t i = 0; i < moved.size(); ++i)
+      {
+        roles->SetValue(moved[i], edit->Moved->Roles[i]);
+      }
+    });
+}
+
+void vtkLaplacianOutputWriter::Release()
+{
+  this->Points.Release();
+  this->PointNormals.Release();
+  this->CellNormals.Release();
+  this->Roles.Release();
+  this->FixedRoles = nullptr;
+}
+
+vtkIdType vtkLaplacianOutputWriter::GetNumberOfCopies() const
+{
+  return this->Points.GetNumberOfCopies() + this->PointNormals.GetNumberOfCopies() +
+    this->CellNormals.GetNumberOfCopies() + this->Roles.GetNumberOfCopies();
 }

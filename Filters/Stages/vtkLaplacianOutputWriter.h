@@ -1,34 +1,89 @@
 /**
  * @class   vtkLaplacianOutputWriter
  * @brief   writes a solved edit into a filter's output: moved points, refreshed normals and the
- *          EditRole array (not wrapped)
+ *          EditRole array, in place between updates (not wrapped)
  *
  * The output is the rest surface with all its point and cell data; the writer replaces the
  * points, the point and cell normals near the edit, and adds EditRole. Every point outside the
  * region keeps its rest coordinates exactly.
+ *
+ * In-place contract: the output's points, normals and EditRole arrays are the writer's, kept
+ * between updates (vtkLaplacianOutputArray). A handle move rewrites only the region's points,
+ * the normals of the region and its ring, and the roles where they change, and marks those
+ * arrays Modified; nothing in proportion to the mesh is allocated or copied. A whole copy is
+ * made for a new rest array (a new input or new content, a commit) and whenever the array the
+ * output held is still held by someone else (a reference kept, a shallow copy, a downstream
+ * output not yet updated): such an array is never written again (copy on write).
  */
 #ifndef vtkLaplacianOutputWriter_h
 #define vtkLaplacianOutputWriter_h
 
 #include "Types.h"
+#include "vtkLaplacianOutputArray.h"
+
+#include "vtkSmartPointer.h"
+
+#include <cstdint>
+#include <vector>
 
 class vtkDataArray;
 class vtkLaplacianNormalRefresher;
-class vtkLaplacianSurfaceAdapter;
+class vtkLookupTable;
 class vtkPolyData;
+class vtkSignedCharArray;
+
+/// The output points an edit moves: their ids, their rows of the solution and their roles.
+struct vtkLaplacianMovedPoints
+{
+  std::vector<vtkIdType> Ids;
+  std::vector<int> Rows;
+  std::vector<signed char> Roles;
+};
+
+/// One update's edit, as the writer takes it. Solution rows are in the core's frame (input =
+/// core / Scale + Center); the normals' index (null: no normals to refresh) has each of its
+/// vertices at VertexRest[v], or at the solution's row VertexRows[v] where that is not -1.
+struct vtkLaplacianOutputEdit
+{
+  const vtkLaplacianMovedPoints* Moved = nullptr;
+  const LaplacianEditing::Positions* Solution = nullptr;
+  LaplacianEditing::Vector3 Center = LaplacianEditing::Vector3::Zero();
+  double Scale = 1.0;
+  const vtkLaplacianNormalRefresher* Normals = nullptr;
+  const std::vector<LaplacianEditing::Vector3>* VertexRest = nullptr;
+  const std::vector<int>* VertexRows = nullptr;
+  /// Changes whenever Moved does (its roles are written again only then).
+  std::uint64_t RegionVersion = 0;
+};
 
 class vtkLaplacianOutputWriter
 {
 public:
-  /// Writes `solution` (rows follow the surface's region, in the core's frame) into `output`, a
-  /// shallow copy of `rest`.
-  void Write(vtkPolyData* rest, vtkPolyData* output, const vtkLaplacianSurfaceAdapter& surface,
-    const vtkLaplacianNormalRefresher& normals, const LaplacianEditing::Positions& solution) const;
+  using Edit = vtkLaplacianOutputEdit;
 
-  /// Adds `roles` as the EditRole array when `generate` is on: the active scalars where the
-  /// output has none, with an indexed lookup table of the paper's Fig. 2 colours when `colors`
-  /// is on.
-  static void AddEditRoles(vtkPolyData* output, vtkDataArray* roles, bool generate, bool colors);
+  /// Writes `edit` into `output`, a shallow copy of `rest`; null: nothing moved (the rest
+  /// arrays, and every role fixed). EditRole is added when `roles` is on: the active scalars
+  /// where the output has none, with an indexed lookup table of the paper's Fig. 2 colours when
+  /// `colors` is on.
+  void Write(vtkPolyData* rest, vtkPolyData* output, const Edit* edit, bool roles, bool colors);
+
+  /// Forgets the kept arrays.
+  void Release();
+
+  /// Whole copies of a rest array made so far (points, normals and roles), for tests.
+  vtkIdType GetNumberOfCopies() const;
+
+private:
+  vtkDataArray* UpdateRoles(vtkIdType count, const Edit* edit);
+
+  vtkLaplacianOutputArray Points;
+  vtkLaplacianOutputArray PointNormals;
+  vtkLaplacianOutputArray CellNormals;
+  vtkLaplacianOutputArray Roles;
+  // EditRole's rest: every point fixed; never written.
+  vtkSmartPointer<vtkSignedCharArray> FixedRoles;
+  vtkSmartPointer<vtkLookupTable> RoleColors;
+  std::uint64_t Writes = 0;
 };
 
 #endif

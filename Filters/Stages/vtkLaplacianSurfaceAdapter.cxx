@@ -272,7 +272,6 @@ std::string vtkLaplacianSurfaceAdapter::Build(
   vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach)
 {
   this->Mesh.reset();
-  this->NumberOfInputPoints = input->GetNumberOfPoints();
   std::vector<char> mark;
   std::string error = MarkReach(input, reach, mark);
   if (!error.empty())
@@ -490,24 +489,16 @@ void vtkLaplacianSurfaceAdapter::IndexRegion(const le::EditRegion& region)
   {
     this->RowOfVertex[region.Vertices[k]] = k;
   }
-  this->RoiPoints.clear();
-  this->Roles = NewRoles(this->NumberOfInputPoints);
+  vtkLaplacianMovedPoints& moved = this->RegionPoints;
+  moved = vtkLaplacianMovedPoints();
   for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
     const int k = this->RowOfVertex[vertexOfPoint[i]];
     if (k >= 0)
     {
-      this->RoiPoints.emplace_back(this->InputPoints[i], k);
-      this->Roles->SetValue(this->InputPoints[i], static_cast<signed char>(region.Roles[k]));
+      moved.Ids.push_back(this->InputPoints[i]);
+      moved.Rows.push_back(k);
+      moved.Roles.push_back(static_cast<signed char>(region.Roles[k]));
     }
   }
-}
-
-vtkSmartPointer<vtkSignedCharArray> vtkLaplacianSurfaceAdapter::NewRoles(vtkIdType count)
-{
-  auto roles = vtkSmartPointer<vtkSignedCharArray>::New();
-  roles->SetName("EditRole");
-  roles->SetNumberOfTuples(count);
-  roles->FillValue(static_cast<signed char>(le::VertexRole::Fixed));
-  return roles;
 }

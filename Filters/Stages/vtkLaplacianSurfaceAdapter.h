@@ -14,8 +14,8 @@
 
 #include "EditRegion.h"
 #include "Types.h"
+#include "vtkLaplacianOutputWriter.h"
 
-#include "vtkSignedCharArray.h" // for the EditRole array
 #include "vtkSmartPointer.h"
 
 #include <array>
@@ -98,14 +98,10 @@ public:
   /// Per surface vertex, the largest label of its points in an integer point array.
   std::vector<int> VertexLabels(vtkDataArray* selection) const;
 
-  /// Indexes the input points in the region (the points to write) and builds the EditRole array.
+  /// Indexes the input points in the region: the points an edit writes, with their rows and roles.
   void IndexRegion(const LaplacianEditing::EditRegion& region);
   const std::vector<int>& GetRowOfVertex() const { return this->RowOfVertex; }
-  /// The input points in the region, each with its ROI row.
-  const std::vector<std::pair<vtkIdType, int>>& GetRegionPoints() const { return this->RoiPoints; }
-  vtkSignedCharArray* GetRoles() const { return this->Roles; }
-  /// An EditRole array of `count` fixed points, with its colours (see GenerateEditRoles).
-  static vtkSmartPointer<vtkSignedCharArray> NewRoles(vtkIdType count);
+  const vtkLaplacianMovedPoints& GetRegionPoints() const { return this->RegionPoints; }
 
 private:
   // Build's steps: the points in reach (1; an error for a non-finite coordinate), the ring of
@@ -121,18 +117,15 @@ private:
   vtkMTimeType BuiltTime = 0;
   bool BuiltMerge = false;
   Reach BuiltReach;
-  vtkIdType NumberOfInputPoints = 0;
   std::vector<vtkIdType> InputPoints;
   std::vector<vtkIdType> InputPolygons;
   std::vector<std::int64_t> Offsets;
   std::vector<std::int64_t> Connectivity;
   LaplacianEditing::Vector3 Center = LaplacianEditing::Vector3::Zero();
   double Scale = 1.0;
-  // Per region: the ROI row of each surface vertex (-1 outside), the input points in the ROI
-  // with their row, and the EditRole array.
+  // Per region: the ROI row of each surface vertex (-1 outside), the input points in the ROI.
   std::vector<int> RowOfVertex;
-  std::vector<std::pair<vtkIdType, int>> RoiPoints;
-  vtkSmartPointer<vtkSignedCharArray> Roles;
+  vtkLaplacianMovedPoints RegionPoints;
 };
 
 #endif
