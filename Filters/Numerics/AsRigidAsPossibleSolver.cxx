@@ -94,6 +94,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   {
     return {};
   }
+  this->Factor.SetManySolves(true); // a solve every iteration
   return this->Factor.Factorize(this->AssembleFreeLaplacian(loop), options.Backend,
     options.Ordering, options.MaximumFactorBytes, 1, options.Distributed);
 }
@@ -181,9 +182,14 @@ void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
     }
   });
   this->RestScale = 0.0;
-  for (std::size_t edge = 0; edge < edges; ++edge)
+  this->RestEdgeSums.assign(energyVertices, Vector3::Zero());
+  for (int i = 0; i < energyVertices; ++i)
   {
-    this->RestScale += this->Weights[edge] * this->RestEdges[edge].squaredNorm();
+    for (int edge = this->Offsets[i]; edge < this->Offsets[i + 1]; ++edge)
+    {
+      this->RestScale += this->Weights[edge] * this->RestEdges[edge].squaredNorm();
+      this->RestEdgeSums[i] += this->Weights[edge] * this->RestEdges[edge];
+    }
   }
 }
 
@@ -328,28 +334,37 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
   only = seed ? nullptr : only; // rotations with no history are seeded everywhere
   const int count = only ? static_cast<int>(only->size()) : this->NumberOfEnergyVertices;
   loop(0, count, [&](int first, int last) {
-    for (int item = first; item < last; ++item)
+    // A block at a time: the rings' covariances, their rotations refined together (vectorized
+    // across the block), then the residuals while the rings are still in cache.
+    constexpr int Block = 16;
+    Eigen::Matrix3d deformations[Block];
+    Eigen::Quaterniond blockRotations[Block];
+    bool converged[Block];
+    for (int begin = first; begin < last; begin += Block)
     {
-      const int i = only ? (*only)[item] : item;
-      // The covariance sum w e e'^T is S^T for the deformation S mapping e to e'.
-      Eigen::Matrix3d deformation = Eigen::Matrix3d::Zero();
-      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      const int size = std::min(Block, last - begin);
+      for (int b = 0; b < size; ++b)
       {
-        deformation.noalias() +=
-          this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
+        const int i = only ? (*only)[begin + b] : begin + b;
+        deformations[b] = this->Deformation(patch, i);
+        blockRotations[b] = quaternions[i];
       }
-      // Exact rotations, so that the iterate is a function of the points alone (to 1e-13).
-      if (seed || !RefineClosestRotation(deformation, quaternions[i]))
+      if (!seed)
       {
-        quaternions[i] = ClosestRotation(deformation);
-        RefineClosestRotation(deformation, quaternions[i]);
+        RefineClosestRotations(deformations, blockRotations, converged, size);
       }
-      rotations[i] = quaternions[i].toRotationMatrix();
-      residuals[i] = 0.0;
-      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      for (int b = 0; b < size; ++b)
       {
-        residuals[i] += this->Weights[k] *
-          (patch[i] - patch[this->Neighbors[k]] - rotations[i] * this->RestEdges[k]).squaredNorm();
+        const int i = only ? (*only)[begin + b] : begin + b;
+        // Exact rotations, so that the iterate is a function of the points alone (to 1e-13).
+        if (seed || !converged[b])
+        {
+          blockRotations[b] = ClosestRotation(deformations[b]);
+          RefineClosestRotation(deformations[b], blockRotations[b]);
+        }
+        quaternions[i] = blockRotations[b];
+        rotations[i] = blockRotations[b].toRotationMatrix();
+        residuals[i] = this->Residual(patch, i, rotations[i]);
       }
     }
   });
@@ -361,6 +376,30 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
   return this->RestScale > 0.0 ? energy / this->RestScale : 0.0;
 }
 
+Eigen::Matrix3d AsRigidAsPossibleSolver::Deformation(const std::vector<Vector3>& patch, int i) const
+{
+  // The covariance sum w e e'^T is S^T for the deformation S mapping e to e'.
+  Eigen::Matrix3d deformation = Eigen::Matrix3d::Zero();
+  for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+  {
+    deformation.noalias() +=
+      this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
+  }
+  return deformation;
+}
+
+double AsRigidAsPossibleSolver::Residual(
+  const std::vector<Vector3>& patch, int i, const Eigen::Matrix3d& rotation) const
+{
+  double residual = 0.0;
+  for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+  {
+    residual += this->Weights[k] *
+      (patch[i] - patch[this->Neighbors[k]] - rotation * this->RestEdges[k]).squaredNorm();
+  }
+  return residual;
+}
+
 Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3d>& rotations,
   const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const
 {
@@ -370,18 +409,19 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
   loop(0, free, [&](int first, int last) {
     for (int u = first; u < last; ++u)
     {
+      // sum_j w_ij (R_i + R_j) e_ij / 2, with R_i's part from the ring's rest sum.
       const int i = this->FreeRows[u];
-      Vector3 b = Vector3::Zero();
+      Vector3 b = rotations[i] * this->RestEdgeSums[i];
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
         const int j = this->Neighbors[k];
-        b.noalias() += (0.5 * this->Weights[k]) * ((rotations[i] + rotations[j]) * this->RestEdges[k]);
+        b.noalias() += this->Weights[k] * (rotations[j] * this->RestEdges[k]);
         if (this->UnknownOfPatch[j] < 0)
         {
-          b += this->Weights[k] * patch[j];
+          b += (2.0 * this->Weights[k]) * patch[j];
         }
       }
-      rhs.row(u) = b.transpose();
+      rhs.row(u) = 0.5 * b.transpose();
     }
   });
   return this->Factor.Solve(rhs, loop);

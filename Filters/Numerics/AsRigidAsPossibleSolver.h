@@ -144,6 +144,10 @@ private:
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
     Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop,
     const std::vector<int>* only = nullptr) const;
+  // Vertex i's ring: its deformation (the weighted covariance of its edges, rest against
+  // `patch`), and its residual under `rotation`.
+  Eigen::Matrix3d Deformation(const std::vector<Vector3>& patch, int i) const;
+  double Residual(const std::vector<Vector3>& patch, int i, const Eigen::Matrix3d& rotation) const;
   // Sets the handle rows to their targets, then the local step at the iterate's points (only
   // around the handles if `aroundHandles`, the other rotations fitting already). Returns the
   // energy.
@@ -166,6 +170,7 @@ private:
   std::vector<int> Neighbors;
   std::vector<double> Weights;
   std::vector<Vector3> RestEdges; // rest position of the vertex minus its neighbour's
+  std::vector<Vector3> RestEdgeSums; // per energy vertex, its edges' weighted sum
   double RestScale = 0.0;
   // Free unknowns: their ROI rows, and the unknown index of each patch row (-1 if known).
   std::vector<int> FreeRows;

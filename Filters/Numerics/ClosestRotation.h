@@ -18,6 +18,12 @@ namespace LaplacianEditing
 /// of Deformations", MIG 2016), which lowers |a - R| from anywhere.
 bool RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int steps = 4);
 
+/// RefineClosestRotation on `count` matrices at once, vectorized across them (the local step
+/// refines one rotation per vertex); converged[i] receives rotation i's result. Every rotation
+/// takes the same steps as alone, to rounding.
+void RefineClosestRotations(
+  const Eigen::Matrix3d* a, Eigen::Quaterniond* q, bool* converged, int count, int steps = 4);
+
 /// The closest rotation, exactly: the seed of a rotation with no history, and the fallback of
 /// a refinement that does not converge.
 Eigen::Quaterniond ClosestRotation(const Eigen::Matrix3d& a);

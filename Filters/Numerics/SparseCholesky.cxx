@@ -79,9 +79,10 @@ struct CholmodBackend : SparseCholesky::Backend
 };
 
 std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(const SparseMatrix& matrix,
-  FillOrdering ordering, int blockSize, double maximumBytes, FactorReport& report)
+  FillOrdering ordering, int blockSize, double maximumBytes, bool manySolves, FactorReport& report)
 {
   auto backend = std::make_unique<CholmodBackend>();
+  backend->Factor.SetManySolves(manySolves);
   Clock::time_point start = Clock::now();
   const int parts = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   report.Error = backend->Factor.Analyze(matrix, ordering, parts, blockSize);
@@ -181,7 +182,7 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
   if (backend == SolverBackend::Cholmod)
   {
-    this->Impl = FactorWithCholmod(matrix, ordering, blockSize, maximumBytes, report);
+    this->Impl = FactorWithCholmod(matrix, ordering, blockSize, maximumBytes, this->ManySolves, report);
   }
 #endif
   if (backend == SolverBackend::SimplicialLDLT)

@@ -56,6 +56,11 @@ public:
     FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0, int blockSize = 1,
     DistributedSolver* distributed = nullptr);
 
+  /// Whether the next factors are solved many times each (ARAP's global step every
+  /// iteration): CHOLMOD's factors then trade a slower factorization for faster solves
+  /// (CholmodFactor::SetManySolves).
+  void SetManySolves(bool many) { this->ManySolves = many; }
+
   /// Solves for every column of `rhs` with the current factor. With CHOLMOD, solves for up to
   /// four columns run independent subtrees of the factor through `loop`.
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop = SerialFor) const;
@@ -84,6 +89,7 @@ private:
   double FactorBytes = 0.0;
   double ParallelShare = 0.0;
   bool Distributed = false;
+  bool ManySolves = false;
 };
 }
 
