@@ -27,11 +27,16 @@
 
 namespace LaplacianEditing
 {
+/// Iterations the stopping test looks back over.
+constexpr int ConvergenceWindow = 3;
+
 struct ArapOptions
 {
   /// Local-global iterations at most per solve.
-  int MaximumIterations = 20;
-  /// Stop when an iteration lowers the energy by less than this fraction of it.
+  int MaximumIterations = 30;
+  /// Stop when the iterations lower the energy by less than this fraction of it per iteration:
+  /// on average over the last ConvergenceWindow (fewer at the start), or, in an extrapolated
+  /// solve (a drag step), in its last iteration after the first.
   double Tolerance = 1e-3;
   /// Anderson acceleration, and how many past iterates it mixes.
   bool Accelerate = true;
@@ -161,8 +166,10 @@ private:
     const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const;
 
   int NumberOfROIVertices = 0;
-  // Patch vertices: ROI rows first, then the rest; their rest positions.
+  // Patch vertices: ROI rows first, then the rest; their rest positions and the diagonal of
+  // their bounding box.
   Positions RestPatch;
+  double RestExtent = 0.0;
   // The energy vertices (ROI and ring, as patch rows), each with its CSR neighbours (patch
   // rows) and symmetric weights.
   int NumberOfEnergyVertices = 0;

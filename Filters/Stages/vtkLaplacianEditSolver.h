@@ -43,7 +43,7 @@ struct vtkLaplacianSolverOptions
   bool PreserveDetailScale = true;
   int ImplicitFormulation = 0;
   /// As-rigid-as-possible: this update's iterations at most, and its convergence test.
-  int ARAPIterations = 20;
+  int ARAPIterations = 30;
   double Convergence = 1e-3;
   bool Acceleration = true;
   bool Extrapolation = true;

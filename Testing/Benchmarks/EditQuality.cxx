@@ -1,7 +1,7 @@
 // The quality of large edits, measured against CGAL 5.5's Surface_mesh_deformation (ARAP) on the
 // same vertex sets; prints one JSON line per edit.
 //
-//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|all] [--picture DIR]
+//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|bend|all] [--picture DIR]
 //
 // Edits:
 //  - cactus: CGAL's cactus.off with cactus.sel (0 fixed, 1 ROI, 2 handle) and the 70-degree
@@ -11,7 +11,9 @@
 //    120 degrees about the ear's long axis (the principal axis of the ROI) through the handle's
 //    centroid;
 //  - armadillo: Armadillo.ply's hand, the handle at vertex 0 (a fingertip), ROI 0.25 and handle
-//    0.04 of the diagonal, translated by 0.01 of the diagonal.
+//    0.04 of the diagonal, translated by 0.01 of the diagonal;
+//  - bend: bumps.obj, a large region: three quarters of the sheet, whose far strip turns 60
+//    degrees (ReferenceEdits.h).
 //
 // For each mode: the ARAP energy of the result (per ROI vertex, the best rotation of its
 // one-ring and the weighted squared residual of its edges, normalized by the ROI's weighted
@@ -64,7 +66,7 @@ struct Mode
   int Rotation;
   int Iterations;
   int ImplicitFormulation;
-  int ARAPIterations = 20;
+  int ARAPIterations = 30;
   double Convergence = 1e-3;
   bool Accelerate = true;
   bool Linear = false; // implicit mode without its rigid step
@@ -208,7 +210,8 @@ int main(int argc, char* argv[])
   if (argc < 2 || std::string(argv[1]) == "--help")
   {
     (argc < 2 ? std::cerr : std::cout)
-      << "usage: " << argv[0] << " DATA_DIR [--edit cactus|twist|armadillo|all] [--picture DIR]\n";
+      << "usage: " << argv[0]
+      << " DATA_DIR [--edit cactus|twist|armadillo|bend|all] [--picture DIR]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string data = argv[1];
@@ -226,7 +229,7 @@ int main(int argc, char* argv[])
     { "arap", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0 },
     { "arap_converged", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0, 1000, 1e-7 },
     { "arap_plain_converged", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0, 1000, 1e-7, false } };
-  for (const std::string name : { "cactus", "twist", "armadillo" })
+  for (const std::string name : { "cactus", "twist", "armadillo", "bend" })
   {
     if (which != "all" && which != name)
     {
@@ -236,6 +239,7 @@ int main(int argc, char* argv[])
     edit.Name = name;
     const bool loaded = name == "cactus" ? ReferenceEdits::LoadCactus(data, edit)
       : name == "twist"                  ? ReferenceEdits::LoadTwist(data, edit)
+      : name == "bend"                   ? ReferenceEdits::LoadBend(data, edit)
                                          : ReferenceEdits::LoadArmadilloHand(data, edit);
     if (!loaded)
     {

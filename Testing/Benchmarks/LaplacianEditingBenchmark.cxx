@@ -167,7 +167,7 @@ struct Options
   bool Extrapolation = true;
   bool Dragging = false;
   bool CompareCGAL = false;
-  int ARAPIterations = 20;
+  int ARAPIterations = 30;
   bool Help = false;
 };
 
@@ -190,7 +190,7 @@ vertices or of a flat grid of about N points (unit spacing, handle at its centre
   --ordering auto|amd|metis|nesdis
   --mode none|explicit|implicit|arap   rotation mode (none)
   --iterations K          explicit mode's iterations (1)
-  --arap-iterations K     as-rigid-as-possible iterations per move (20)
+  --arap-iterations K     as-rigid-as-possible iterations per move (30)
   --linear                implicit mode without its rigid step (PreserveDetailScale off)
   --no-extrapolation      as-rigid-as-possible updates start from the last result itself
   --dragging              the moves are a drag (the filter's Dragging on, as the widget sets it):

@@ -3,7 +3,11 @@
 //    turn of cactus.def;
 //  - twist: stanford-bunny.obj with unused vertices dropped; the handle is the highest vertex
 //    (an ear tip), with an edge-path ROI of 0.15 and a handle of 0.03 of the diagonal, turned
-//    120 degrees about the ear's long axis (the ROI's principal axis) through its centroid.
+//    120 degrees about the ear's long axis (the ROI's principal axis) through its centroid;
+//  - bend: bumps.obj, a large region: the quarter of the sheet at its low x fixed, the strip of
+//    its last 2% at high x the handle, turned 60 degrees about the z axis (the strip's
+//    direction) through the handle's centroid and lifted by 1% of the sheet's width. The
+//    rotation must travel across three quarters of the sheet, which ARAP does slowly.
 #ifndef ReferenceEdits_h
 #define ReferenceEdits_h
 
@@ -183,6 +187,43 @@ inline bool LoadTwist(const std::string& data, Edit& edit, double degrees = 120.
   edit.Handle->RotateWXYZ(degrees, axis.data());
   edit.Handle->Translate(handleMean.data());
   return true;
+}
+
+// The bumpy sheet bent: see the top of this file.
+inline bool LoadBend(const std::string& data, Edit& edit)
+{
+  std::string error;
+  vtkSmartPointer<vtkPolyData> bumps = MeshReader::Read(data + "/bumps.obj", error);
+  if (!bumps)
+  {
+    std::cerr << "error: " << error << "\n";
+    return false;
+  }
+  edit.Mesh = Weld(bumps);
+  const double* bounds = edit.Mesh->GetBounds();
+  const double width = bounds[1] - bounds[0];
+  edit.Labels = vtkSmartPointer<vtkIntArray>::New();
+  edit.Labels->SetName("Selection");
+  Eigen::Vector3d handleMean = Eigen::Vector3d::Zero();
+  int handles = 0;
+  for (vtkIdType i = 0; i < edit.Mesh->GetNumberOfPoints(); ++i)
+  {
+    const Eigen::Vector3d p(edit.Mesh->GetPoint(i));
+    const double x = (p.x() - bounds[0]) / width;
+    const int label = x < 0.25 ? 0 : x > 0.98 ? 2 : 1;
+    edit.Labels->InsertNextValue(label);
+    if (label == 2)
+    {
+      handleMean += p;
+      ++handles;
+    }
+  }
+  handleMean /= std::max(handles, 1);
+  edit.Handle->PostMultiply();
+  edit.Handle->Translate(-handleMean[0], -handleMean[1], -handleMean[2]);
+  edit.Handle->RotateZ(60.0);
+  edit.Handle->Translate(handleMean[0], handleMean[1] + 0.01 * width, handleMean[2]);
+  return handles > 0;
 }
 
 // Armadillo's hand: the handle at vertex 0 (a fingertip), an edge-path ROI of 0.25 and a handle
