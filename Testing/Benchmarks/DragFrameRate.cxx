@@ -3,17 +3,20 @@
 //
 //   DragFrameRate MESH ROI_FRACTION [FRAMES] [MODE] [widget]
 //
-// The handle sits on vertex 0 with a radius of 3% of the bounding-box diagonal; the ROI radius
-// is ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode number (0
+// MESH is a file (MeshReader.h) or sphere:THETAxPHI (sphere:2000x1002 has 2M points). The
+// handle sits on vertex 0 (on a sphere, the vertex nearest (0.5, 0, 0)) with a radius of 3% of
+// the bounding-box diagonal, or a third of the ROI radius if that is less; the ROI radius is
+// ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode number (0
 // none, default). Without "widget" each frame sets the handle transform directly, lifting the
 // handle by 10% of the diagonal over the drag (this path uses only the filter's basic API, so
 // the same program measures older versions too). With "widget" a vtkDeformationHandleWidget is
 // dragged by recorded mouse events, 2 pixels up per frame, as a user would, and released.
 //
-// It also prints the drag's slowest frame and the release's (the widget's; frames per second
-// leave it out), each update's as-rigid-as-possible iterations (mode 3),
-// and that mode's energy at the last frame of the drag and after the release, over the energy
-// converged at the same pose.
+// Before the drag, ten still renders of the same scene are timed: a frame's milliseconds over
+// their median is what the drag adds to drawing the surface. It also prints the drag's
+// slowest frame and the release's (the widget's; frames per second leave it out), each
+// update's as-rigid-as-possible iterations (mode 3), and that mode's energy at the last frame
+// of the drag and after the release, over the energy converged at the same pose.
 #include "MeshReader.h"
 
 #include "vtkLaplacianDeformationFilter.h"
@@ -26,17 +29,184 @@
 #include "vtkCommand.h"
 #include "vtkInteractorEventRecorder.h"
 #include "vtkMath.h"
-#include "vtkRenderWindowInteractor.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkTransform.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The handle's vertex: 0, or on a generated sphere the one on its equator at +x.
+vtkIdType HandleVertex(vtkPolyData* mesh, const std::string& name)
+{
+  if (name.rfind("sphere:", 0) != 0)
+  {
+    return 0;
+  }
+  const double target[3] = { 0.5, 0.0, 0.0 };
+  vtkIdType nearest = 0;
+  double best = VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    const double distance = vtkMath::Distance2BetweenPoints(mesh->GetPoint(i), target);
+    nearest = distance < best ? i : nearest;
+    best = std::min(best, distance);
+  }
+  return nearest;
+}
+
+// The scene: the filter's output in an 800 x 600 offscreen window.
+struct Scene
+{
+  vtkNew<vtkLaplacianDeformationFilter> Filter;
+  vtkNew<vtkTransform> Drag;
+  vtkNew<vtkPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene(vtkPolyData* mesh, vtkIdType handle, double roiFraction, int mode)
+  {
+    const double diagonal = mesh->GetLength();
+    this->Filter->SetInputData(mesh);
+    this->Filter->SetHandleCenter(mesh->GetPoint(handle));
+    this->Filter->SetHandleRadius(std::min(0.03, roiFraction / 3.0) * diagonal);
+    this->Filter->SetROIRadius(roiFraction * diagonal);
+    this->Filter->SetRotationMode(mode);
+    this->Filter->SetHandleTransform(this->Drag);
+    this->Mapper->SetInputConnection(this->Filter->GetOutputPort());
+    this->Mapper->ScalarVisibilityOff();
+    this->Actor->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Actor);
+    this->Window->SetSize(800, 600);
+    this->Window->OffScreenRenderingOn();
+    this->Window->AddRenderer(this->Renderer);
+    this->Window->Render(); // select and factor
+    this->Renderer->ResetCamera();
+  }
+
+  // The median of ten renders of the unchanged scene.
+  double StillRenderSeconds()
+  {
+    std::vector<double> seconds;
+    for (int k = 0; k < 10; ++k)
+    {
+      const Clock::time_point start = Clock::now();
+      this->Window->Render();
+      seconds.push_back(SecondsSince(start));
+    }
+    std::sort(seconds.begin(), seconds.end());
+    return seconds[seconds.size() / 2];
+  }
+};
+
+// The widget on the handle, and the recorded events of a drag 2 pixels up a frame.
+std::string WidgetDrag(Scene& scene, vtkRenderWindowInteractor* interactor,
+  vtkDeformationHandleWidget* widget, int frames)
+{
+  interactor->SetRenderWindow(scene.Window);
+  widget->SetInteractor(interactor);
+  widget->SetDeformationFilter(scene.Filter);
+  widget->On();
+  scene.Renderer->ResetCameraClippingRange();
+  scene.Window->Render();
+  double center[3];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  scene.Renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
+  scene.Renderer->WorldToDisplay();
+  const int x = static_cast<int>(scene.Renderer->GetDisplayPoint()[0]);
+  const int y = static_cast<int>(scene.Renderer->GetDisplayPoint()[1]);
+  auto line = [](const char* name, int px, int py) {
+    return std::string(name) + " " + std::to_string(px) + " " + std::to_string(py) + " 0 0 0 0 i\n";
+  };
+  std::string events = line("MouseMoveEvent", x, y) + line("LeftButtonPressEvent", x, y);
+  for (int frame = 1; frame <= frames; ++frame)
+  {
+    events += line("MouseMoveEvent", x, y + 2 * frame);
+  }
+  return events + line("LeftButtonReleaseEvent", x, y + 2 * frames);
+}
+
+// Each update's time and iterations, and the energy of the updates during the drag and last.
+struct Trace
+{
+  vtkLaplacianDeformationFilter* Filter;
+  Clock::time_point Last;
+  double Slowest = 0.0;
+  std::vector<int> Iterations;
+  std::vector<double> Energies;
+  std::size_t DragUpdates = 0; // the updates before the release
+  bool Released = false;
+  double ReleaseSeconds = 0.0; // the frame the release renders
+  vtkNew<vtkCallbackCommand> RenderEnd, FilterEnd, Release;
+
+  explicit Trace(vtkLaplacianDeformationFilter* filter)
+    : Filter(filter)
+  {
+    this->RenderEnd->SetClientData(this);
+    this->RenderEnd->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+      auto& t = *static_cast<Trace*>(data);
+      const double frame = SecondsSince(t.Last);
+      if (t.Released)
+      {
+        t.ReleaseSeconds = frame;
+      }
+      else
+      {
+        t.Slowest = std::max(t.Slowest, frame);
+      }
+      t.Last = Clock::now();
+    });
+    this->FilterEnd->SetClientData(this);
+    this->FilterEnd->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+      auto& t = *static_cast<Trace*>(data);
+      t.Iterations.push_back(t.Filter->GetNumberOfARAPIterations());
+      t.Energies.push_back(t.Filter->GetARAPEnergy());
+    });
+    this->Release->SetClientData(this);
+    this->Release->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
+      auto& t = *static_cast<Trace*>(data);
+      t.DragUpdates = t.Energies.size();
+      t.Released = true;
+      t.Last = Clock::now();
+    });
+  }
+};
+
+// The ARAP mode's iterations each update, and its energies over converged.
+void ReportARAP(vtkLaplacianDeformationFilter* filter, const Trace& trace, bool widget)
+{
+  std::cout << ", \"arap_iterations\": [";
+  for (std::size_t k = 0; k < trace.Iterations.size(); ++k)
+  {
+    std::cout << (k ? ", " : "") << trace.Iterations[k];
+  }
+  const std::size_t dragUpdates = widget ? trace.DragUpdates : trace.Energies.size();
+  const double dragged = trace.Energies[std::max<std::size_t>(dragUpdates, 1) - 1];
+  const double released = trace.Energies.back();
+  filter->SetARAPIterations(10000);
+  filter->SetConvergence(1e-9);
+  filter->Update();
+  const double converged = filter->GetARAPEnergy();
+  std::cout << "], \"arap_energy_over_converged\": {\"drag_end\": " << dragged / converged
+            << ", \"after_release\": " << released / converged << "}";
+}
+}
 
 int main(int argc, char* argv[])
 {
@@ -53,159 +223,57 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const int frames = argc > 3 ? std::max(1, std::atoi(argv[3])) : 60;
-  const double diagonal = mesh->GetLength();
-  vtkNew<vtkLaplacianDeformationFilter> filter;
-  filter->SetInputData(mesh);
-  filter->SetHandleCenter(mesh->GetPoint(0));
-  filter->SetHandleRadius(0.03 * diagonal);
-  filter->SetROIRadius(std::atof(argv[2]) * diagonal);
-  filter->SetRotationMode(argc > 4 ? std::atoi(argv[4]) : 0);
-  vtkNew<vtkTransform> drag;
-  filter->SetHandleTransform(drag);
-
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(filter->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(800, 600);
-  window->OffScreenRenderingOn();
-  window->AddRenderer(renderer);
-  window->Render(); // select and factor
-  renderer->ResetCamera();
-
   const bool useWidget = argc > 5 && std::string(argv[5]) == "widget";
+  Scene scene(mesh, HandleVertex(mesh, argv[1]), std::atof(argv[2]), argc > 4 ? std::atoi(argv[4]) : 0);
+  vtkLaplacianDeformationFilter* filter = scene.Filter;
   vtkNew<vtkRenderWindowInteractor> interactor;
   vtkNew<vtkDeformationHandleWidget> widget;
   vtkNew<vtkInteractorEventRecorder> recorder;
-  std::string events;
-  if (useWidget)
-  {
-    interactor->SetRenderWindow(window);
-    widget->SetInteractor(interactor);
-    widget->SetDeformationFilter(filter);
-    widget->On();
-    renderer->ResetCameraClippingRange();
-    window->Render();
-    double center[3];
-    widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
-    renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
-    renderer->WorldToDisplay();
-    const int x = static_cast<int>(renderer->GetDisplayPoint()[0]);
-    const int y = static_cast<int>(renderer->GetDisplayPoint()[1]);
-    auto line = [](const char* name, int px, int py) {
-      return std::string(name) + " " + std::to_string(px) + " " + std::to_string(py) + " 0 0 0 0 i\n";
-    };
-    events = line("MouseMoveEvent", x, y) + line("LeftButtonPressEvent", x, y);
-    for (int frame = 1; frame <= frames; ++frame)
-    {
-      events += line("MouseMoveEvent", x, y + 2 * frame);
-    }
-    events += line("LeftButtonReleaseEvent", x, y + 2 * frames);
-    recorder->SetInteractor(interactor);
-    recorder->ReadFromInputStringOn();
-    recorder->SetInputString(events.c_str());
-  }
+  const std::string events = useWidget ? WidgetDrag(scene, interactor, widget, frames) : "";
+  recorder->SetInteractor(interactor);
+  recorder->ReadFromInputStringOn();
+  recorder->SetInputString(events.c_str());
+  const double still = scene.StillRenderSeconds();
 
-  // Each update's time and iterations, and the energy of the updates during the drag and last.
-  struct Trace
-  {
-    vtkLaplacianDeformationFilter* Filter;
-    std::chrono::steady_clock::time_point Last;
-    double Slowest = 0.0;
-    std::vector<int> Iterations;
-    std::vector<double> Energies;
-    std::size_t DragUpdates = 0; // the updates before the release
-    bool Released = false;
-    double ReleaseSeconds = 0.0; // the frame the release renders
-  } trace{ filter, std::chrono::steady_clock::now() };
-  vtkNew<vtkCallbackCommand> renderEnd;
-  renderEnd->SetClientData(&trace);
-  renderEnd->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
-    auto& t = *static_cast<Trace*>(data);
-    const auto now = std::chrono::steady_clock::now();
-    const double frame = std::chrono::duration<double>(now - t.Last).count();
-    if (t.Released)
-    {
-      t.ReleaseSeconds = frame;
-    }
-    else
-    {
-      t.Slowest = std::max(t.Slowest, frame);
-    }
-    t.Last = now;
-  });
-  vtkNew<vtkCallbackCommand> filterEnd;
-  filterEnd->SetClientData(&trace);
-  filterEnd->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
-    auto& t = *static_cast<Trace*>(data);
-    t.Iterations.push_back(t.Filter->GetNumberOfARAPIterations());
-    t.Energies.push_back(t.Filter->GetARAPEnergy());
-  });
-  vtkNew<vtkCallbackCommand> release;
-  release->SetClientData(&trace);
-  release->SetCallback([](vtkObject*, unsigned long, void* data, void*) {
-    auto& t = *static_cast<Trace*>(data);
-    t.DragUpdates = t.Energies.size();
-    t.Released = true;
-    t.Last = std::chrono::steady_clock::now();
-  });
-  widget->AddObserver(vtkCommand::EndInteractionEvent, release);
-  window->AddObserver(vtkCommand::EndEvent, renderEnd);
-  filter->AddObserver(vtkCommand::EndEvent, filterEnd);
-
-  const auto start = std::chrono::steady_clock::now();
+  Trace trace(filter);
+  widget->AddObserver(vtkCommand::EndInteractionEvent, trace.Release);
+  scene.Window->AddObserver(vtkCommand::EndEvent, trace.RenderEnd);
+  filter->AddObserver(vtkCommand::EndEvent, trace.FilterEnd);
+  const Clock::time_point start = Clock::now();
   trace.Last = start;
   if (useWidget)
   {
     recorder->Play(); // each move renders through the widget
   }
-  else
+  for (int frame = 1; !useWidget && frame <= frames; ++frame)
   {
-    for (int frame = 1; frame <= frames; ++frame)
-    {
-      drag->Identity();
-      drag->Translate(0.0, 0.0, 0.1 * diagonal * frame / frames);
-      window->Render();
-    }
+    scene.Drag->Identity();
+    scene.Drag->Translate(0.0, 0.0, 0.1 * mesh->GetLength() * frame / frames);
+    scene.Window->Render();
   }
-  // The drag's frames, without the release's.
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
-    trace.ReleaseSeconds;
-  window->RemoveObserver(renderEnd);
-  filter->RemoveObserver(filterEnd);
+  const double seconds = SecondsSince(start) - trace.ReleaseSeconds; // the drag's frames alone
+  scene.Window->RemoveObserver(trace.RenderEnd);
+  filter->RemoveObserver(trace.FilterEnd);
   // How far the drag took the handle, to show the frames really moved it.
   double origin[3] = { 0.0, 0.0, 0.0 }, moved[3];
   filter->GetHandleTransform()->TransformPoint(origin, moved);
-  std::cout << "{\"mesh\": \"" << argv[1] << "\", \"roi_vertices\": "
-            << filter->GetNumberOfROIVertices() << ", \"mode\": " << filter->GetRotationMode()
-            << ", \"driver\": \"" << (useWidget ? "widget" : "transform") << "\", \"frames\": "
-            << frames << ", \"frames_per_second\": " << frames / seconds
+  std::cout << "{\"mesh\": \"" << argv[1] << "\", \"points\": " << mesh->GetNumberOfPoints()
+            << ", \"roi_vertices\": " << filter->GetNumberOfROIVertices()
+            << ", \"mode\": " << filter->GetRotationMode() << ", \"driver\": \""
+            << (useWidget ? "widget" : "transform") << "\", \"frames\": " << frames
+            << ", \"frames_per_second\": " << frames / seconds
+            << ", \"frame_ms\": " << 1000.0 * seconds / frames
+            << ", \"still_ms\": " << 1000.0 * still
+            << ", \"frame_over_still\": " << seconds / frames / still
             << ", \"handle_moved\": " << vtkMath::Norm(moved)
             << ", \"factorizations\": " << filter->GetNumberOfFactorizations()
+            << ", \"output_copies\": " << filter->GetNumberOfOutputCopies()
             << ", \"slowest_frame_seconds\": " << trace.Slowest
             << ", \"release_seconds\": " << trace.ReleaseSeconds;
   if (filter->GetRotationMode() == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE &&
     !trace.Energies.empty())
   {
-    std::cout << ", \"arap_iterations\": [";
-    for (std::size_t k = 0; k < trace.Iterations.size(); ++k)
-    {
-      std::cout << (k ? ", " : "") << trace.Iterations[k];
-    }
-    const std::size_t dragUpdates = useWidget ? trace.DragUpdates : trace.Energies.size();
-    const double dragged = trace.Energies[std::max<std::size_t>(dragUpdates, 1) - 1];
-    const double released = trace.Energies.back();
-    filter->SetARAPIterations(10000);
-    filter->SetConvergence(1e-9);
-    filter->Update();
-    const double converged = filter->GetARAPEnergy();
-    std::cout << "], \"arap_energy_over_converged\": {\"drag_end\": " << dragged / converged
-              << ", \"after_release\": " << released / converged << "}";
+    ReportARAP(filter, trace, useWidget);
   }
   std::cout << "}\n";
   return EXIT_SUCCESS;

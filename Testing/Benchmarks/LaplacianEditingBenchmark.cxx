@@ -472,27 +472,20 @@ std::string MeasureCGAL(vtkPolyData* mesh, vtkDataArray* roles, const Options& o
   return json.str();
 }
 #endif
-}
 
-int main(int argc, char* argv[])
+// The mesh the options name, with the handle's centre in options.Point.
+vtkSmartPointer<vtkPolyData> MakeMesh(Options& options, std::string& name, std::string& error)
 {
-  Options options;
-  if (!Parse(argc, argv, options) || options.Help)
-  {
-    (options.Help ? std::cout : std::cerr) << Usage;
-    return options.Help ? EXIT_SUCCESS : EXIT_FAILURE;
-  }
-  std::string error;
-  std::string meshName = options.Mesh;
   vtkSmartPointer<vtkPolyData> mesh;
+  name = options.Mesh;
   if (options.SphereVertices > 0.0)
   {
-    meshName = "sphere-" + std::to_string(static_cast<long>(options.SphereVertices));
+    name = "sphere-" + std::to_string(static_cast<long>(options.SphereVertices));
     mesh = Sphere(options.SphereVertices);
   }
   else if (options.GridPoints > 0.0)
   {
-    meshName = "grid-" + std::to_string(static_cast<long>(options.GridPoints));
+    name = "grid-" + std::to_string(static_cast<long>(options.GridPoints));
     mesh = Grid(options.GridPoints);
     if (!options.UsePoint)
     {
@@ -504,25 +497,38 @@ int main(int argc, char* argv[])
   {
     mesh = MeshReader::Read(options.Mesh, error);
   }
+  if (mesh && options.LargestComponent)
+  {
+    options.Vertex = FirstVertexOfLargestComponent(mesh);
+  }
+  if (mesh && !options.UsePoint)
+  {
+    if (options.Vertex < 0 || options.Vertex >= mesh->GetNumberOfPoints())
+    {
+      error = "vertex " + std::to_string(options.Vertex) + " out of range";
+      return nullptr;
+    }
+    mesh->GetPoint(options.Vertex, options.Point);
+  }
+  return mesh;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!Parse(argc, argv, options) || options.Help)
+  {
+    (options.Help ? std::cout : std::cerr) << Usage;
+    return options.Help ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
+  std::string meshName, error;
+  vtkSmartPointer<vtkPolyData> mesh = MakeMesh(options, meshName, error);
   if (!mesh)
   {
     std::cerr << "error: " << error << "\n";
     return EXIT_FAILURE;
   }
-  if (options.LargestComponent)
-  {
-    options.Vertex = FirstVertexOfLargestComponent(mesh);
-  }
-  if (!options.UsePoint)
-  {
-    if (options.Vertex < 0 || options.Vertex >= mesh->GetNumberOfPoints())
-    {
-      std::cerr << "error: vertex " << options.Vertex << " out of range\n";
-      return EXIT_FAILURE;
-    }
-    mesh->GetPoint(options.Vertex, options.Point);
-  }
-
   if (options.CompareCGAL)
   {
     // CGAL needs one vertex per position; the filter welds internally, CGAL cannot.
