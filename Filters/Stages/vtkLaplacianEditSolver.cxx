@@ -3,9 +3,12 @@
 #include "vtkLaplacianSurfaceAdapter.h"
 
 #include "vtkObject.h"
+#include "vtkSMP.h"
 #include "vtkSMPTools.h"
+#include "vtkVersionMacros.h"
 
 #include <chrono>
+#include <cstring>
 
 namespace le = LaplacianEditing;
 
@@ -56,9 +59,19 @@ le::RotationOptions RotationOptions(const vtkLaplacianEditSolver::Options& optio
 
 vtkLaplacianEditSolver::vtkLaplacianEditSolver()
 {
-  // The core's per-move loops run on VTK's SMP backend.
+  // The core's per-move loops run on VTK's SMP backend. ParaView's VTK runs it on one thread
+  // unless told otherwise (VTK_SMP_BACKEND_IN_USE): the core's loops take VTK's thread pool
+  // there, which halves an ARAP drag's frame on two cores.
   this->Editor.SetParallelFor([](int begin, int end, const std::function<void(int, int)>& body) {
-    vtkSMPTools::For(begin, end, [&](int first, int last) { body(first, last); });
+    auto run = [&] { vtkSMPTools::For(begin, end, [&](int first, int last) { body(first, last); }); };
+#if VTK_SMP_ENABLE_STDTHREAD && VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+    if (std::strcmp(vtkSMPTools::GetBackend(), "Sequential") == 0)
+    {
+      vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("STDThread") }, run);
+      return;
+    }
+#endif
+    run();
   });
 }
 
