@@ -5,11 +5,19 @@
 
 #include <algorithm>
 
-bool vtkLaplacianOutputArray::Buffer::IsFree() const
+bool vtkLaplacianOutputArray::Buffer::IsFree(const Holders& pipeline) const
 {
-  // Ours alone: the array is held here (and by its vtkPoints), the vtkPoints only here.
-  return this->Points ? this->Points->GetReferenceCount() == 1 && this->Array->GetReferenceCount() == 2
-                      : this->Array->GetReferenceCount() == 1;
+  // Ours alone: the array is held here (and by its vtkPoints), the vtkPoints only here, but
+  // for the pipeline's outputs downstream.
+  auto others = [&](vtkObjectBase* object, vtkObjectBase* own) {
+    return pipeline ? pipeline(object, own) : 0;
+  };
+  if (this->Points)
+  {
+    return this->Points->GetReferenceCount() == 1 + others(this->Points, nullptr) &&
+      this->Array->GetReferenceCount() == 2 + others(this->Array, this->Points);
+  }
+  return this->Array->GetReferenceCount() == 1 + others(this->Array, nullptr);
 }
 
 vtkDataArray* vtkLaplacianOutputArray::Update(
@@ -71,7 +79,7 @@ vtkLaplacianOutputArray::Buffer& vtkLaplacianOutputArray::Acquire(vtkDataArray* 
   Buffer* best = nullptr;
   for (Buffer& buffer : this->Buffers)
   {
-    if (buffer.IsFree() && bool(buffer.Points) == points &&
+    if (buffer.IsFree(this->PipelineHolders) && bool(buffer.Points) == points &&
       (!best || holds(buffer) > holds(*best) ||
         (holds(buffer) == holds(*best) && buffer.LastUse > best->LastUse)))
     {

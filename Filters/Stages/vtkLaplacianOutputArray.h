@@ -10,9 +10,11 @@
  * changed (a new input, a commit) or when every buffer is held by another object.
  *
  * Copy on write: a buffer that anyone else holds (a user's reference or shallow copy, a
- * downstream filter's output that has not updated yet) is never written. A buffer is free when
- * this object holds its only reference (and that of its vtkPoints). A pipeline whose consumer
- * keeps the previous output until it updates again (ParaView's representations) alternates
+ * rendering cache) is never written. A buffer is free when its only references are this
+ * object's (and its vtkPoints') and those of the outputs of the filters connected to the
+ * output, which the next pipeline update recomputes (the PipelineHolders function counts
+ * them: ParaView puts a pass-through filter after every source). A consumer that keeps the previous output
+ * elsewhere until it updates again (ParaView's representations) makes the updates alternate
  * between two buffers, each written in place; at most MaximumBuffers are kept, and one held
  * elsewhere beyond that is left to its holder.
  */
@@ -27,12 +29,19 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkObjectBase;
 class vtkPoints;
 
 class vtkLaplacianOutputArray
 {
 public:
   using Writer = std::function<void(vtkDataArray*)>;
+  /// How many references to `object` the outputs of the filters downstream hold, not counting
+  /// those through `ownPoints` (the buffer's vtkPoints, when `object` is its array).
+  using Holders = std::function<int(vtkObjectBase* object, vtkObjectBase* ownPoints)>;
+
+  /// The references that do not make a buffer shared; none by default.
+  void SetPipelineHolders(const Holders& holders) { this->PipelineHolders = holders; }
 
   /// An array equal to `rest` except at the tuples `ids`, which `write` sets (all of them).
   /// `key` names what `write` writes: a buffer whose last update had the same rest, ids and key
@@ -65,7 +74,7 @@ private:
     std::vector<vtkIdType> Written;
     std::uint64_t Key = 0;
     vtkIdType LastUse = 0;
-    bool IsFree() const;
+    bool IsFree(const Holders& pipeline) const;
   };
 
   Buffer* Find(vtkDataArray* rest, const std::vector<vtkIdType>& ids, std::uint64_t key);
@@ -74,6 +83,7 @@ private:
     std::uint64_t key, const Writer& write);
 
   std::vector<Buffer> Buffers;
+  Holders PipelineHolders;
   vtkIdType Copies = 0;
   vtkIdType Uses = 0;
 };

@@ -3,15 +3,21 @@
 #include "EditRegion.h"
 #include "vtkLaplacianNormalRefresher.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkInformationExecutivePortVectorKey.h"
+#include "vtkInformation.h"
 #include "vtkLookupTable.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSignedCharArray.h"
 #include "vtkVariant.h"
+
 
 namespace le = LaplacianEditing;
 
@@ -36,6 +42,31 @@ vtkSmartPointer<vtkLookupTable> NewRoleColors()
     table->SetAnnotation(vtkVariant(role), roles[role].Name);
   }
   return table;
+}
+
+// References to `object` held by `data` (see CountDownstreamReferences).
+int CountReferences(vtkDataObject* data, vtkObjectBase* object, vtkObjectBase* ownPoints)
+{
+  auto* dataSet = vtkDataSet::SafeDownCast(data);
+  if (!dataSet)
+  {
+    return 0;
+  }
+  int count = 0;
+  if (auto* pointSet = vtkPointSet::SafeDownCast(dataSet))
+  {
+    vtkPoints* points = pointSet->GetPoints();
+    count += points && (points == object || (points != ownPoints && points->GetData() == object));
+  }
+  for (vtkFieldData* fields : { static_cast<vtkFieldData*>(dataSet->GetPointData()),
+         static_cast<vtkFieldData*>(dataSet->GetCellData()) })
+  {
+    for (int i = 0; i < fields->GetNumberOfArrays(); ++i)
+    {
+      count += fields->GetAbstractArray(i) == object;
+    }
+  }
+  return count;
 }
 
 // The normals array of `attributes` the writer refreshes: three components, or none.
@@ -114,6 +145,40 @@ vtkDataArray* vtkLaplacianOutputWriter::UpdateRoles(vtkIdType count, const Edit*
         roles->SetValue(moved[i], edit->Moved->Roles[i]);
       }
     });
+}
+
+int vtkLaplacianOutputWriter::CountDownstreamReferences(
+  vtkAlgorithm* filter, vtkObjectBase* object, vtkObjectBase* ownPoints)
+{
+  // The filters connected to port 0 (one level: ParaView's pass-through filter; a deeper
+  // consumer holds the arrays through it).
+  vtkInformation* info = filter && filter->GetNumberOfOutputPorts() > 0
+    ? filter->GetExecutive()->GetOutputInformation(0)
+    : nullptr;
+  const int consumers = info ? vtkExecutive::CONSUMERS()->Length(info) : 0;
+  vtkExecutive** executives = consumers ? vtkExecutive::CONSUMERS()->GetExecutives(info) : nullptr;
+  int count = 0;
+  for (int c = 0; c < consumers; ++c)
+  {
+    vtkExecutive* consumer = executives[c];
+    for (int p = 0; consumer && consumer->GetAlgorithm() && p < consumer->GetNumberOfOutputPorts(); ++p)
+    {
+      count += CountReferences(consumer->GetOutputData(p), object, ownPoints);
+    }
+  }
+  return count;
+}
+
+void vtkLaplacianOutputWriter::SetFilter(vtkAlgorithm* filter)
+{
+  const vtkLaplacianOutputArray::Holders holders = [filter](vtkObjectBase* object,
+                                                     vtkObjectBase* ownPoints) {
+    return CountDownstreamReferences(filter, object, ownPoints);
+  };
+  for (vtkLaplacianOutputArray* array : { &this->Points, &this->PointNormals, &this->CellNormals, &this->Roles })
+  {
+    array->SetPipelineHolders(holders);
+  }
 }
 
 void vtkLaplacianOutputWriter::Release()

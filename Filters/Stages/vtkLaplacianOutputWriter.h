@@ -12,8 +12,9 @@
  * the normals of the region and its ring, and the roles where they change, and marks those
  * arrays Modified; nothing in proportion to the mesh is allocated or copied. A whole copy is
  * made for a new rest array (a new input or new content, a commit) and whenever the array the
- * output held is still held by someone else (a reference kept, a shallow copy, a downstream
- * output not yet updated): such an array is never written again (copy on write).
+ * output held is still held by someone else than the outputs of the filters connected to the
+ * output (a reference kept, a shallow copy, a rendering cache): such an array is never written
+ * again (copy on write). Those outputs share it until the next update recomputes them.
  */
 #ifndef vtkLaplacianOutputWriter_h
 #define vtkLaplacianOutputWriter_h
@@ -26,6 +27,7 @@
 #include <cstdint>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataArray;
 class vtkLaplacianNormalRefresher;
 class vtkLookupTable;
@@ -69,6 +71,16 @@ public:
 
   /// Forgets the kept arrays.
   void Release();
+
+  /// The filter whose output port 0 the writer writes: references that the outputs of the
+  /// filters connected to it hold do not count as sharing.
+  void SetFilter(vtkAlgorithm* filter);
+
+  /// How many references to `object` the outputs of the filters connected to `filter`'s port 0
+  /// hold (as their points, their points' array unless through `ownPoints`, or a point or cell
+  /// array).
+  static int CountDownstreamReferences(
+    vtkAlgorithm* filter, vtkObjectBase* object, vtkObjectBase* ownPoints);
 
   /// Whole copies of a rest array made so far (points, normals and roles), for tests.
   vtkIdType GetNumberOfCopies() const;

@@ -37,8 +37,10 @@ mode = sys.argv[6] if len(sys.argv) > 6 else "none"
 solver = sys.argv[7] if len(sys.argv) > 7 else "CHOLMOD"
 rotation_modes = {"none": ("None", 1), "explicit": ("Explicit", 1), "implicit": ("Implicit", 1),
                   "implicit-linear": ("Implicit", 0), "arap": ("As rigid as possible", 1)}
+before_sphere = rss_mb()
 sphere = Sphere(ThetaResolution=theta, PhiResolution=phi, Radius=0.5)
 sphere.UpdatePipeline()
+sphere_rss = rss_mb() - before_sphere  # what generating the piece took, for the ratios
 
 
 def edit():
@@ -70,9 +72,12 @@ def edit():
     before = piece.GetPoints()
     figures["moved here"] = sum(1 for i in range(moved.GetNumberOfPoints())
                                 if moved.GetPoint(i) != before.GetPoint(i))
-    print(f"rank {rank}: piece {piece.GetNumberOfPoints()} points "
-          f"({piece.GetActualMemorySize() / 1024.0:.0f} MB); growth at setup {setup:.0f} MB, after "
-          f"{move_count} moves {moves:.0f} MB; peak {rss_mb('VmHWM:'):.0f} MB; setup {setup_seconds:.2f} s, "
+    dataset = piece.GetActualMemorySize() / 1024.0
+    print(f"rank {rank}: piece {piece.GetNumberOfPoints()} points ({dataset:.0f} MB; "
+          f"{sphere_rss:.0f} MB to generate); growth at setup {setup:.0f} MB, after "
+          f"{move_count} moves {moves:.0f} MB ({moves / dataset:.2f} of the piece, "
+          f"{moves / sphere_rss:.2f} of its generation); peak {rss_mb('VmHWM:'):.0f} MB; "
+          f"setup {setup_seconds:.2f} s, "
           f"a move {move_ms:.1f} ms; the first "
           f"rank's edit: {figures}", flush=True)
     gathered, region = figures["NumberOfGatheredPoints"], figures["NumberOfROIVertices"]
