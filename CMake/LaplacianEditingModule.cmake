@@ -19,6 +19,7 @@ set(classes
 list(TRANSFORM classes PREPEND "${_le_root}/")
 # The filters' stages and the parallel filter's helpers, not part of the module's API.
 set(private_classes
+  Filters/Stages/vtkLaplacianDragPreview
   Filters/Stages/vtkLaplacianEditSolver
   Filters/Stages/vtkLaplacianHandleMaps
   Filters/Stages/vtkLaplacianNormalRefresher
@@ -27,7 +28,8 @@ set(private_classes
   Filters/Stages/vtkLaplacianRegionSelector
   Filters/Stages/vtkLaplacianRestShape
   Filters/Stages/vtkLaplacianSurfaceAdapter
-  Filters/Parallel/vtkLaplacianPieceEdit)
+  Filters/Parallel/vtkLaplacianPieceEdit
+  Widgets/vtkDeformationHandlePreview)
 list(TRANSFORM private_classes PREPEND "${_le_root}/")
 set(private_sources ${private_classes})
 set(private_headers ${private_classes})

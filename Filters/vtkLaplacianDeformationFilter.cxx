@@ -1,5 +1,6 @@
 #include "vtkLaplacianDeformationFilter.h"
 
+#include "vtkLaplacianDragPreview.h"
 #include "vtkLaplacianEditSolver.h"
 #include "vtkLaplacianHandleMaps.h"
 #include "vtkLaplacianNormalRefresher.h"
@@ -87,9 +88,12 @@ struct vtkLaplacianDeformationFilter::vtkInternals
   vtkLaplacianHandleMaps Handles;
   vtkLaplacianNormalRefresher Normals;
   vtkLaplacianOutputWriter Writer;
+  vtkLaplacianDragPreview Preview;
   double Diagonal = 0.0; // of the rest surface's bounding box
-  // Whether the last EditSurface solved an edit.
+  // Whether the last EditSurface solved an edit, and when; whether a preview solved since.
   bool Edited = false;
+  vtkTimeStamp EditTime;
+  bool Previewed = false;
 };
 
 vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
@@ -102,6 +106,7 @@ vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
   this->SetNumberOfInputPorts(2);
+  this->Internals->Writer.SetFilter(this);
 }
 
 vtkLaplacianDeformationFilter::~vtkLaplacianDeformationFilter() = default;
@@ -205,9 +210,11 @@ void vtkLaplacianDeformationFilter::SetDragging(vtkTypeBool dragging)
   }
   this->Dragging = dragging;
   this->SettleAfterDrag = !dragging;
-  if (!dragging)
+  if (!dragging && !this->Internals->Previewed)
   {
-    this->Modified(); // the next update settles the pose the drag left
+    // The next update settles the pose the drag left. A previewed drag left the output as it
+    // was: the update that applies its motion settles it.
+    this->Modified();
   }
 }
 
@@ -236,6 +243,7 @@ void vtkLaplacianDeformationFilter::RunStages(vtkPolyData* input, vtkPolyData* o
   // Each stage is skipped when its cache holds; progress after each that may take seconds
   // (graph, region and its factor, rotation model and its factor).
   this->Internals->Edited = false;
+  this->Internals->Previewed = false;
   output->ShallowCopy(input);
   if (!this->CheckInput(input))
   {
@@ -259,9 +267,10 @@ void vtkLaplacianDeformationFilter::RunStages(vtkPolyData* input, vtkPolyData* o
     return;
   }
   this->UpdateProgress(0.9);
-  if (this->Solve())
+  if (this->Solve(this->HandleTranslation, this->HandleRotation))
   {
     this->WriteOutput(rest, output);
+    this->Internals->EditTime.Modified();
   }
   this->UpdateProgress(1.0);
 }
@@ -315,7 +324,7 @@ vtkLaplacianRegionSelector::Parameters vtkLaplacianDeformationFilter::RegionPara
   return parameters;
 }
 
-vtkLaplacianEditSolver::Options vtkLaplacianDeformationFilter::SolverOptions()
+vtkLaplacianEditSolver::Options vtkLaplacianDeformationFilter::SolverOptions(bool dragStep)
 {
   vtkLaplacianEditSolver::Options options;
   options.LaplacianWeights = this->LaplacianWeights;
@@ -334,8 +343,9 @@ vtkLaplacianEditSolver::Options vtkLaplacianDeformationFilter::SolverOptions()
   options.PreserveDetailScale = this->PreserveDetailScale != 0;
   options.ImplicitFormulation = this->ImplicitFormulation;
   // A drag caps each update's iterations; the update after it settles the shape in full.
-  options.ARAPIterations =
-    this->Dragging ? std::min(this->DragARAPIterations, this->ARAPIterations) : this->ARAPIterations;
+  options.ARAPIterations = this->Dragging || dragStep
+    ? std::min(this->DragARAPIterations, this->ARAPIterations)
+    : this->ARAPIterations;
   options.Convergence = this->SettleAfterDrag ? 0.0 : this->Convergence;
   options.Acceleration = this->Acceleration != 0;
   options.Extrapolation = this->Extrapolation != 0;
@@ -445,12 +455,12 @@ void vtkLaplacianDeformationFilter::UpdateFactorizationCounts()
   this->NumberOfFactorizationAttempts = editor.GetNumberOfFactorizationAttempts();
 }
 
-bool vtkLaplacianDeformationFilter::Solve()
+bool vtkLaplacianDeformationFilter::Solve(const double translation[3], const double rotation[3])
 {
   vtkInternals& internals = *this->Internals;
   const int groups = internals.Solver.GetEditor().GetRegion().NumberOfHandleGroups;
-  if (!this->Check(internals.Solver.Solve(internals.Handles.Maps(groups, internals.Surface,
-        this->HandleCenter, this->HandleRotation, this->HandleTranslation))))
+  if (!this->Check(internals.Solver.Solve(
+        internals.Handles.Maps(groups, internals.Surface, this->HandleCenter, rotation, translation))))
   {
     return false;
   }
@@ -462,12 +472,11 @@ bool vtkLaplacianDeformationFilter::Solve()
   return true;
 }
 
-void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
+vtkLaplacianOutputEdit vtkLaplacianDeformationFilter::SolvedEdit() const
 {
-  vtkInternals& internals = *this->Internals;
-  const Clock::time_point start = Clock::now();
+  const vtkInternals& internals = *this->Internals;
   const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
-  vtkLaplacianOutputWriter::Edit edit;
+  vtkLaplacianOutputEdit edit;
   edit.Moved = &surface.GetRegionPoints();
   edit.Solution = &internals.Solver.GetSolution();
   edit.Center = surface.GetCenter();
@@ -476,8 +485,67 @@ void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* 
   edit.VertexRest = &surface.GetMesh()->GetPositions();
   edit.VertexRows = &surface.GetRowOfVertex();
   edit.RegionVersion = internals.Solver.GetModelVersion();
+  return edit;
+}
+
+void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
+{
+  vtkInternals& internals = *this->Internals;
+  const Clock::time_point start = Clock::now();
+  const vtkLaplacianOutputEdit edit = this->SolvedEdit();
   this->WriteEdit(rest, output, &edit);
   internals.Solver.GetFacts().SolveTime += SecondsSince(start);
+}
+
+bool vtkLaplacianDeformationFilter::PreviewHandleMotion(
+  const double translation[3], const double rotation[3])
+{
+  // Only the handle's motion may differ from the last update's: no property, transform or
+  // input content changed since.
+  vtkInternals& internals = *this->Internals;
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!internals.Edited || !input || this->GetMTime() > internals.EditTime ||
+    vtkLaplacianSurfaceAdapter::GetContentTime(input) > internals.EditTime)
+  {
+    return false;
+  }
+  // A drag step, as during a drag with Dragging on; the region and its factors are the
+  // update's, so nothing is rebuilt.
+  if (!this->Check(internals.Solver.UpdateRotationModel(this->SolverOptions(true), this)) ||
+    !this->Solve(translation, rotation))
+  {
+    return false;
+  }
+  const vtkLaplacianOutputEdit edit = this->SolvedEdit();
+  if (!internals.Preview.IsBuiltFor(edit.RegionVersion))
+  {
+    internals.Preview.Build(internals.Rest.Get(input), this->GetOutput(), edit);
+  }
+  internals.Preview.Write(edit);
+  internals.Previewed = true;
+  return true;
+}
+
+bool vtkLaplacianDeformationFilter::PreviewHandleMotion(
+  double tx, double ty, double tz, double rx, double ry, double rz)
+{
+  const double translation[3] = { tx, ty, tz }, rotation[3] = { rx, ry, rz };
+  return this->PreviewHandleMotion(translation, rotation);
+}
+
+vtkPolyData* vtkLaplacianDeformationFilter::GetPreviewStillPart()
+{
+  return this->Internals->Preview.GetStillPart();
+}
+
+vtkPolyData* vtkLaplacianDeformationFilter::GetPreviewMovingPart()
+{
+  return this->Internals->Preview.GetMovingPart();
+}
+
+void vtkLaplacianDeformationFilter::ReleasePreview()
+{
+  this->Internals->Preview.Release();
 }
 
 void vtkLaplacianDeformationFilter::WriteEdit(

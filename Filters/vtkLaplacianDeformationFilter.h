@@ -251,8 +251,9 @@ public:
    * As-rigid-as-possible mode: a handle is being dragged (vtkDeformationHandleWidget and its
    * ParaView panel set it). Meanwhile each update runs at most DragARAPIterations, so every
    * frame costs about the same. Turning it on does not mark the filter modified; turning it off
-   * does, and the next update settles the shape: ARAPIterations in full, without the
-   * Convergence test, which the slow tail a drag leaves would pass at once. Default off.
+   * does (unless the drag was previewed, PreviewHandleMotion, whose motion the next update
+   * applies anyway), and the next update settles the shape: ARAPIterations in full, without
+   * the Convergence test, which the slow tail a drag leaves would pass at once. Default off.
    */
   void SetDragging(vtkTypeBool dragging);
   vtkGetMacro(Dragging, vtkTypeBool);
@@ -518,6 +519,30 @@ public:
 
   ///@{
   /**
+   * A drag's preview, outside the pipeline, for views that redraw a whole surface whenever any
+   * point of it moves (ParaView's representations take about a second a frame at 2M points):
+   * solves the last update's edit with the handle's translation and rotation (as
+   * HandleTranslation and HandleRotation) replaced by these, as one update of a drag would
+   * (DragARAPIterations), and writes the result into the moving part: the polygons with a
+   * corner in the region, on a compact copy of their points and point and cell data, normals
+   * refreshed. The still part is the rest of the surface. A view draws both in place of the
+   * output (vtkDeformationHandleRepresentation::SetPreviewFilter) and uploads only the moving
+   * part each move. Neither the filter nor its output is modified; the next update solves and
+   * writes as usual. Returns false, previewing nothing, when the last update solved no edit
+   * or anything but the handle's motion changed since (properties, transforms, input). The
+   * still part costs in proportion to the surface once per region (its own polygons); the
+   * parts are kept until ReleasePreview or the next region. A handle group that has a
+   * transform (SetHandleTransform) keeps it.
+   */
+  bool PreviewHandleMotion(const double translation[3], const double rotation[3]);
+  bool PreviewHandleMotion(double tx, double ty, double tz, double rx, double ry, double rz);
+  vtkPolyData* GetPreviewStillPart();
+  vtkPolyData* GetPreviewMovingPart();
+  void ReleasePreview();
+  ///@}
+
+  ///@{
+  /**
    * Facts of the last update: ROI and handle sizes; seconds building the surface graph (only
    * when the input changed); seconds of the region's setup (0 when the cached factor was
    * reused), of its ordering analysis and of its numeric factorization alone; and seconds
@@ -676,8 +701,9 @@ private:
   bool UpdateSurfaceGraph(vtkPolyData* rest);
   bool UpdateRegion(vtkPolyData* rest);
   bool UpdateRotationModel();
-  bool Solve();
-  vtkLaplacianSolverOptions SolverOptions();
+  bool Solve(const double translation[3], const double rotation[3]);
+  vtkLaplacianOutputEdit SolvedEdit() const;
+  vtkLaplacianSolverOptions SolverOptions(bool dragStep = false);
   void UpdateFactorizationCounts();
   void ResetStatistics();
   // PrintSelf's parts.

@@ -6,7 +6,9 @@
 #include "vtkCamera.h"
 #include "vtkCellPicker.h"
 #include "vtkCommand.h"
+#include "vtkDeformationHandlePreview.h"
 #include "vtkInteractorObserver.h"
+#include "vtkLaplacianDeformationFilter.h"
 #include "vtkLineSource.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -29,6 +31,7 @@
 vtkStandardNewMacro(vtkDeformationHandleRepresentation);
 
 vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
+  : Preview(new vtkDeformationHandlePreview)
 {
   this->InteractionState = Outside;
   this->HandleProperty = vtkProperty::New();
@@ -85,8 +88,39 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
 
 vtkDeformationHandleRepresentation::~vtkDeformationHandleRepresentation()
 {
+  this->Preview->Hide();
+  this->SetPreviewFilter(nullptr);
   this->HandleProperty->Delete();
   this->SelectedHandleProperty->Delete();
+}
+
+vtkCxxSetObjectMacro(vtkDeformationHandleRepresentation, PreviewFilter, vtkLaplacianDeformationFilter);
+
+void vtkDeformationHandleRepresentation::SetPreviewing(vtkTypeBool previewing)
+{
+  if (this->Previewing != previewing)
+  {
+    this->Previewing = previewing;
+    this->UpdatePreview();
+    this->Modified();
+  }
+}
+
+bool vtkDeformationHandleRepresentation::IsPreviewShown() const
+{
+  return this->Preview->IsShown();
+}
+
+void vtkDeformationHandleRepresentation::UpdatePreview()
+{
+  if (this->Previewing && this->PreviewFilter && this->Renderer)
+  {
+    this->Preview->Show(this->Renderer, this->PreviewFilter, this->Translation, this->RotationAngles);
+  }
+  else
+  {
+    this->Preview->Hide();
+  }
 }
 
 vtkProperty* vtkDeformationHandleRepresentation::GetRingProperty(int axis)
@@ -201,6 +235,10 @@ void vtkDeformationHandleRepresentation::UpdateTransform()
   }
   this->Transform->SetMatrix(matrix);
   this->Modified();
+  if (this->Previewing)
+  {
+    this->UpdatePreview();
+  }
 }
 
 void vtkDeformationHandleRepresentation::GetCurrentCenter(double center[3])
@@ -595,15 +633,17 @@ int vtkDeformationHandleRepresentation::RenderTranslucentPolygonalGeometry(vtkVi
   return this->RenderActors(&vtkProp::RenderTranslucentPolygonalGeometry, viewport);
 }
 
-std::array<vtkActor*, 7> vtkDeformationHandleRepresentation::Actors()
+std::array<vtkActor*, 9> vtkDeformationHandleRepresentation::Actors()
 {
+  const std::array<vtkActor*, 2> preview = this->Preview->Actors();
   return { this->RingActors[AxisX], this->RingActors[AxisY], this->RingActors[AxisZ],
-    this->RingActors[ViewAxis], this->HandleActor, this->ROIActor, this->AxisActor };
+    this->RingActors[ViewAxis], this->HandleActor, this->ROIActor, this->AxisActor, preview[0],
+    preview[1] };
 }
 
 vtkTypeBool vtkDeformationHandleRepresentation::HasTranslucentPolygonalGeometry()
 {
-  const std::array<vtkActor*, 7> actors = this->Actors();
+  const std::array<vtkActor*, 9> actors = this->Actors();
   return std::any_of(actors.begin(), actors.end(),
     [](vtkActor* actor) { return actor->GetVisibility() && actor->HasTranslucentPolygonalGeometry(); });
 }
@@ -621,4 +661,7 @@ void vtkDeformationHandleRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "HandleProperty: " << this->HandleProperty << "\n";
   os << indent << "SelectedHandleProperty: " << this->SelectedHandleProperty << "\n";
   os << indent << "RotationAxis: " << this->RotationAxis << "\n";
+  os << indent << "PreviewFilter: " << this->PreviewFilter << "\n";
+  os << indent << "Previewing: " << (this->Previewing ? "On" : "Off")
+     << (this->Preview->IsShown() ? " (shown)" : "") << "\n";
 }

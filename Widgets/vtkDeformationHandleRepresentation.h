@@ -18,6 +18,12 @@
  * ResizingHandle set the radii from the distance between the handle centre and the cursor, in
  * the view plane.
  *
+ * Drag preview: with a PreviewFilter and Previewing on, every change of the translation or
+ * rotation shows the filter's preview of that motion (PreviewHandleMotion) in place of the
+ * actor that draws the filter's output, without updating the pipeline; turning Previewing off
+ * puts that actor back (see vtkDeformationHandlePreview). ParaView's panel uses it to drag
+ * large surfaces, and updates the pipeline once on release.
+ *
  * @sa vtkDeformationHandleWidget vtkLaplacianDeformationFilter
  */
 #ifndef vtkDeformationHandleRepresentation_h
@@ -27,10 +33,13 @@
 #include "vtkNew.h"                           // for vtkNew
 #include "vtkWidgetRepresentation.h"
 
-#include <array> // for std::array
+#include <array>  // for std::array
+#include <memory> // for std::unique_ptr
 
 class vtkActor;
 class vtkCellPicker;
+class vtkDeformationHandlePreview;
+class vtkLaplacianDeformationFilter;
 class vtkLineSource;
 class vtkPolyDataMapper;
 class vtkProperty;
@@ -112,6 +121,20 @@ public:
    * Back to the rest pose: identity transform.
    */
   void ResetTransform();
+
+  ///@{
+  /**
+   * The drag preview (see the class description): the filter whose edit it previews, and
+   * whether it shows now. Default none, off.
+   */
+  void SetPreviewFilter(vtkLaplacianDeformationFilter* filter);
+  vtkGetObjectMacro(PreviewFilter, vtkLaplacianDeformationFilter);
+  void SetPreviewing(vtkTypeBool previewing);
+  vtkGetMacro(Previewing, vtkTypeBool);
+  vtkBooleanMacro(Previewing, vtkTypeBool);
+  /** Whether the preview shows now (the filter could preview, and an actor showed its output). */
+  bool IsPreviewShown() const;
+  ///@}
 
   ///@{
   /**
@@ -199,8 +222,10 @@ protected:
   // frame axis when constrained), and the turn of a ring about `center`.
   void Translate(const double world[3]);
   void Rotate(const double eventPosition[2], const double center[3]);
-  // Every actor, the rings first.
-  std::array<vtkActor*, 7> Actors();
+  // Every actor, the rings first, the preview's parts last.
+  std::array<vtkActor*, 9> Actors();
+  // Shows or hides the preview as Previewing says, for the current motion.
+  void UpdatePreview();
   // Renders the visible actors with `render` (an opaque or translucent pass).
   int RenderActors(int (vtkProp::*render)(vtkViewport*), vtkViewport* viewport);
 
@@ -245,6 +270,9 @@ protected:
   vtkProperty* HandleProperty;
   vtkProperty* SelectedHandleProperty;
   vtkNew<vtkProperty> RingProperties[4];
+  vtkLaplacianDeformationFilter* PreviewFilter = nullptr;
+  vtkTypeBool Previewing = 0;
+  std::unique_ptr<vtkDeformationHandlePreview> Preview;
 
 private:
   vtkDeformationHandleRepresentation(const vtkDeformationHandleRepresentation&) = delete;

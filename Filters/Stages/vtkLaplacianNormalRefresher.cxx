@@ -18,15 +18,17 @@ namespace le = LaplacianEditing;
 
 namespace
 {
-// Writes normalOf(r), normalized, at tuple ids[r] of `normals` (a 3-component array).
+// Writes normalOf(r), normalized, at tuple ids[r] (or r, `compact`) of `normals` (a
+// 3-component array).
 template <typename NormalOf>
-void WriteNormals(vtkDataArray* normals, const std::vector<vtkIdType>& ids, NormalOf normalOf)
+void WriteNormals(
+  vtkDataArray* normals, const std::vector<vtkIdType>& ids, bool compact, NormalOf normalOf)
 {
   vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType r = begin; r < end; ++r)
     {
       const le::Vector3 n = normalOf(r).normalized();
-      normals->SetTuple3(ids[r], n[0], n[1], n[2]);
+      normals->SetTuple3(compact ? r : ids[r], n[0], n[1], n[2]);
     }
   });
 }
@@ -107,7 +109,7 @@ void vtkLaplacianNormalRefresher::Index(vtkPolyData* input, const vtkLaplacianSu
 
 void vtkLaplacianNormalRefresher::WritePointNormals(vtkDataArray* normals,
   const std::vector<le::Vector3>& rest, const std::vector<int>& rowOfVertex,
-  const le::Positions& solution) const
+  const le::Positions& solution, bool compact) const
 {
   // Each triangle's (area-weighted) normal once, then their sums around each point.
   const PositionOf position{ rest, rowOfVertex, solution };
@@ -121,7 +123,7 @@ void vtkLaplacianNormalRefresher::WritePointNormals(vtkDataArray* normals,
         triangleNormals[s] = (position(triangle[1]) - origin).cross(position(triangle[2]) - origin);
       }
     });
-  WriteNormals(normals, this->Points, [&](vtkIdType r) {
+  WriteNormals(normals, this->Points, compact, [&](vtkIdType r) {
     le::Vector3 n = le::Vector3::Zero();
     for (int j = this->PointTriangleOffsets[r]; j < this->PointTriangleOffsets[r + 1]; ++j)
     {
@@ -133,10 +135,10 @@ void vtkLaplacianNormalRefresher::WritePointNormals(vtkDataArray* normals,
 
 void vtkLaplacianNormalRefresher::WriteCellNormals(vtkDataArray* normals,
   const std::vector<le::Vector3>& rest, const std::vector<int>& rowOfVertex,
-  const le::Positions& solution) const
+  const le::Positions& solution, bool compact) const
 {
   const PositionOf position{ rest, rowOfVertex, solution };
-  WriteNormals(normals, this->Cells, [&](vtkIdType r) {
+  WriteNormals(normals, this->Cells, compact, [&](vtkIdType r) {
     const int* corners = this->CellVertices.data() + this->CellVertexOffsets[r];
     const int size = this->CellVertexOffsets[r + 1] - this->CellVertexOffsets[r];
     le::Vector3 n = le::Vector3::Zero();

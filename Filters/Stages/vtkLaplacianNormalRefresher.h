@@ -37,11 +37,14 @@ public:
   /// Writes the point normals (at GetPointIds) and the polygon normals (at GetCellIds) of the
   /// edited surface into `normals`, with vertex v at rest[v], or at solution's row
   /// rowOfVertex[v] where that is not -1 (the moved region), in the core's coordinates
-  /// (normals do not depend on the frame's translation and scale).
+  /// (normals do not depend on the frame's translation and scale). With `compact`, the i-th
+  /// id's normal goes to tuple i instead (an array of the region alone).
   void WritePointNormals(vtkDataArray* normals, const std::vector<LaplacianEditing::Vector3>& rest,
-    const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution) const;
+    const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution,
+    bool compact = false) const;
   void WriteCellNormals(vtkDataArray* normals, const std::vector<LaplacianEditing::Vector3>& rest,
-    const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution) const;
+    const std::vector<int>& rowOfVertex, const LaplacianEditing::Positions& solution,
+    bool compact = false) const;
 
   /// The part of the index on the points and polygons that `pointId` and `cellId` map to
   /// another data set's ids (-1: not in the part), with its vertices renumbered in order of

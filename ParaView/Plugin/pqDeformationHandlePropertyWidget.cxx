@@ -4,6 +4,7 @@
 #include "pqDoubleLineEdit.h"
 #include "pqPipelineSource.h"
 #include "pqPointPickingHelper.h"
+#include "pqServer.h"
 #include "pqServerManagerModel.h"
 #include "pqView.h"
 #include "vtkBoundingBox.h"
@@ -12,6 +13,7 @@
 #include "vtkNew.h"
 #include "vtkPVDataInformation.h"
 #include "vtkPVGeneralSettings.h"
+#include "vtkPVRenderView.h"
 #include "vtkPVSession.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
 #include "vtkSMParaViewPipelineController.h"
@@ -81,6 +83,7 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
   QObject::connect(this, &pqPropertyWidget::viewChanged, picker, &pqPointPickingHelper::setView);
   QObject::connect(picker, &pqPointPickingHelper::pick, this, &pqDeformationHandlePropertyWidget::setCenter);
   this->connectInteraction();
+  this->connectPreview(true);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::widgetVisibilityUpdated, this,
     &pqDeformationHandlePropertyWidget::showGroupHandles);
   if (auto* source =
@@ -161,19 +164,21 @@ void pqDeformationHandlePropertyWidget::connectInteraction()
   // it at every move too, so the surface follows the handle during the drag (a move only
   // re-solves). The radii are applied on release (the widget reports them then).
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::interaction, this,
-    &pqPropertyWidget::changeFinished);
+    &pqDeformationHandlePropertyWidget::onInteraction);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::startInteraction, this,
     &pqDeformationHandlePropertyWidget::rememberEdit);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
     &pqDeformationHandlePropertyWidget::commitBeforePlacing);
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::startInteraction, this,
-    &pqDeformationHandlePropertyWidget::beginAutoApplyDrag);
+    [this]() { this->beginAutoApplyDrag(true); });
   QObject::connect(this, &pqInteractivePropertyWidgetAbstract::endInteraction, this,
     &pqDeformationHandlePropertyWidget::endAutoApplyDrag);
 }
 
 pqDeformationHandlePropertyWidget::~pqDeformationHandlePropertyWidget()
 {
+  this->endPreview();
+  this->connectPreview(false);
   while (!this->GroupHandles.empty())
   {
     this->removeLastGroupHandle();
@@ -278,6 +283,10 @@ std::array<double, 6> pqDeformationHandlePropertyWidget::showGroupFields(int gro
 
 void pqDeformationHandlePropertyWidget::updateGroupHandles()
 {
+  if (this->PreviewUntilUpdate && !this->hasUnappliedMotion())
+  {
+    this->endPreview(); // the pipeline has the drag's result: the view renders it next
+  }
   // The filter reports its groups after an update; each further group's handle sits at the
   // group's rest centroid, which only the filter's process knows.
   vtkSMProxy* filter = this->proxy();
@@ -422,7 +431,7 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
   // (The first handle's start and end signals would also commit on a placement: not here.)
   if (event == vtkCommand::StartInteractionEvent)
   {
-    this->beginAutoApplyDrag();
+    this->beginAutoApplyDrag(false); // the preview shows the first group's motion alone
     return;
   }
   std::array<double, 6> motion;
@@ -439,7 +448,66 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
   }
 }
 
-void pqDeformationHandlePropertyWidget::beginAutoApplyDrag()
+void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
+{
+  // The representation on the process that has the filter (the built-in session's, or a
+  // server's that renders too) previews with it; elsewhere the filter has no object.
+  vtkSMProxy* filter = this->proxy();
+  vtkSMProxy* widget = this->widgetProxy();
+  pqServer* server = pqApplicationCore::instance()->getServerManagerModel()->findServer(
+    filter->GetSession());
+  if (!widget || !server || server->isRenderServerSeparate() || connect == this->PreviewConnected)
+  {
+    return;
+  }
+  vtkClientServerStream stream;
+  stream << vtkClientServerStream::Invoke << VTKOBJECT(widget) << "GetRepresentation"
+         << vtkClientServerStream::End;
+  stream << vtkClientServerStream::Invoke << vtkClientServerStream::LastResult
+         << "SetPreviewFilter";
+  if (connect)
+  {
+    stream << VTKOBJECT(filter);
+  }
+  else
+  {
+    stream << vtkClientServerID(0);
+  }
+  stream << vtkClientServerStream::End;
+  filter->GetSession()->ExecuteStream(vtkPVSession::DATA_SERVER, stream, false);
+  this->PreviewConnected = connect;
+}
+
+bool pqDeformationHandlePropertyWidget::canPreview()
+{
+  pqView* view = this->view();
+  pqServer* server = view ? view->getServer() : nullptr;
+  if (!this->PreviewConnected || !server)
+  {
+    return false;
+  }
+  // A remote server draws the preview where it renders: with one process, when the view
+  // renders there (a large surface; a small one is delivered and drawn here, and applied).
+  auto* renderView = vtkPVRenderView::SafeDownCast(view->getViewProxy()->GetClientSideObject());
+  return !server->isRemote() ||
+    (server->getNumberOfPartitions() == 1 && renderView &&
+      renderView->GetUseDistributedRenderingForRender());
+}
+
+void pqDeformationHandlePropertyWidget::onInteraction()
+{
+  if (this->Previewing)
+  {
+    this->widgetProxy()->UpdateVTKObjects(); // the motion, to a server's representation
+    this->render();
+  }
+  else
+  {
+    Q_EMIT this->changeFinished(); // Auto Apply applies the move
+  }
+}
+
+void pqDeformationHandlePropertyWidget::beginAutoApplyDrag(bool preview)
 {
   // With Auto Apply, every move is applied and the view rendered with the new surface and
   // handle: the render the widget asks for first would show the old surface, and costs as much
@@ -456,6 +524,13 @@ void pqDeformationHandlePropertyWidget::beginAutoApplyDrag()
   view->getViewProxy()->UpdateVTKObjects();
   // As the VTK widget does: a few as-rigid-as-possible iterations a frame, settled on release.
   this->proxy()->InvokeCommand("DraggingOn");
+  this->endPreview(); // one left from a drag whose values were never applied
+  this->Previewing = preview && this->canPreview();
+  if (this->Previewing)
+  {
+    vtkSMPropertyHelper(this->widgetProxy(), "Previewing").Set(1);
+    this->widgetProxy()->UpdateVTKObjects();
+  }
 }
 
 void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
@@ -464,9 +539,7 @@ void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
   {
     return;
   }
-  // The filter is modified on the server alone: mark the pipeline so that the render updates it.
   this->proxy()->InvokeCommand("DraggingOff");
-  this->proxy()->MarkModified(this->proxy());
   pqView* view = this->view();
   if (view)
   {
@@ -475,7 +548,47 @@ void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
     view->getViewProxy()->UpdateVTKObjects();
   }
   this->SavedRenderOnInteraction = -1;
+  if (this->Previewing && this->hasUnappliedMotion())
+  {
+    // Auto Apply applies the drag's values and updates the pipeline once, settled (Dragging
+    // is off); that update ends the preview, so that no frame shows the surface of before
+    // the drag, and nothing marks the pipeline before it.
+    this->PreviewUntilUpdate = true;
+    return;
+  }
+  // The filter is modified on the server alone: mark the pipeline so that the render updates
+  // it (the drag's last move is applied already: the settled update remains).
+  this->endPreview();
+  this->proxy()->MarkModified(this->proxy());
   this->render();
+}
+
+bool pqDeformationHandlePropertyWidget::hasUnappliedMotion()
+{
+  for (const char* name : { "HandleTranslation", "HandleRotation" })
+  {
+    vtkSMPropertyHelper applied(this->proxy(), name), dragged(this->proxy(), name);
+    dragged.SetUseUnchecked(true);
+    for (unsigned int i = 0; i < applied.GetNumberOfElements(); ++i)
+    {
+      if (applied.GetAsDouble(i) != dragged.GetAsDouble(i))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+void pqDeformationHandlePropertyWidget::endPreview()
+{
+  if (this->Previewing)
+  {
+    vtkSMPropertyHelper(this->widgetProxy(), "Previewing").Set(0);
+    this->widgetProxy()->UpdateVTKObjects();
+  }
+  this->Previewing = false;
+  this->PreviewUntilUpdate = false;
 }
 
 void pqDeformationHandlePropertyWidget::rememberEdit()

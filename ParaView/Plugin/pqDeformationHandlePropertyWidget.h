@@ -6,8 +6,12 @@
  * vtkDeformationHandleWidget in the active render view (the same widget as in VTK), and fields
  * for the handle centre, the handle and ROI radii, the translation and the rotation, which stay
  * in sync with the widget both ways. During a drag the panel's values follow the widget; with
- * Auto Apply on, the filter re-solves at every move (moving and turning only re-solve; a resize
- * refactors once, on release). A click on the surface (or "P" over it) puts the handle there;
+ * Auto Apply on, the surface follows every move. Where the filter runs in the process that
+ * renders (the built-in session, or a one-process server rendering remotely), a drag of the
+ * handle is drawn by the widget's preview: the filter solves each move outside the pipeline
+ * and the view redraws only the moving part of the surface (vtkDeformationHandleRepresentation);
+ * the pipeline updates once, on release, to what a scripted update gives. Elsewhere each move
+ * is applied (moving and turning only re-solve; a resize refactors once, on release). A click on the surface (or "P" over it) puts the handle there;
  * an edit in progress is committed first, as in VTK.
  * Commit Edit makes the current result the rest shape of the next edit; Reset Handle undoes the
  * current move.
@@ -60,8 +64,12 @@ protected Q_SLOTS:
   void commitEdit();
   void rememberEdit();
   void commitBeforePlacing();
-  void beginAutoApplyDrag();
+  // A drag with Auto Apply: previewed (`preview`, where the preview can draw it) or applied
+  // at every move.
+  void beginAutoApplyDrag(bool preview = true);
   void endAutoApplyDrag();
+  // A move of the handle: the preview's, or Auto Apply's.
+  void onInteraction();
   // After the filter updated: one handle per further group, at its rest centroid.
   void updateGroupHandles();
   void showGroupHandles(bool visible);
@@ -72,6 +80,14 @@ private:
   void addFields(vtkSMPropertyGroup* group, QGridLayout* layout, int& row);
   void addButtons(QGridLayout* layout, int& row);
   void connectInteraction();
+  // Gives the widget's representation the filter, where both live in one process.
+  void connectPreview(bool connect);
+  // Whether a drag can be previewed: the filter runs where the view renders.
+  bool canPreview();
+  // Whether the handle's translation or rotation waits to be applied.
+  bool hasUnappliedMotion();
+  // Gives the view's surface back to the pipeline.
+  void endPreview();
   // Sets widget properties, then tells the panel (and Auto Apply) that they changed.
   void pushWidgetChange();
   void addGroupHandle();
@@ -100,6 +116,11 @@ private:
   bool StartMoved = false;
   // The view's EnableRenderOnInteraction before a drag that Auto Apply renders (-1: untouched).
   int SavedRenderOnInteraction = -1;
+  // Whether the representation has the filter, and whether the current drag is previewed.
+  bool PreviewConnected = false;
+  bool Previewing = false;
+  // After a previewed drag: the preview shows until the pipeline updates with its values.
+  bool PreviewUntilUpdate = false;
 };
 
 #endif

@@ -1,18 +1,25 @@
 """Frames per second of a handle drag in the ParaView GUI, as DragFrameRate measures it in VTK:
 the project's handle widget is dragged by mouse events sent to the render view's interactor,
-2 pixels up per frame, with Auto Apply on: each frame applies the handle's values and renders,
-as Auto Apply does (the widget leaves the view's rendering to it during the drag). Run in the GUI's own Python:
+2 pixels up per frame, with Auto Apply on, and released. Each frame renders the view, as the
+panel has it rendered: where the drag is previewed (the filter solves in the process that
+renders), the preview draws the move and the pipeline updates once, on release; otherwise each
+frame first applies the handle's values, as Auto Apply does. Run in the GUI's own Python:
 
     LAPLACIAN_BENCH="MESH ROI_FRACTION [FRAMES] [MODE]" paraview \\
       --plugin-search-paths=build/paraview/lib/paraview-5.11/plugins/LaplacianEditing \\
       --plugins=LaplacianEditing --script=ParaView/Testing/DragFrameRate.py
 
-The handle sits on point 0 with a radius of 3% of the bounding-box diagonal; the ROI radius is
+MESH is a file ParaView reads, or sphere:THETAxPHI for ParaView's Sphere source at those
+resolutions (sphere:2000x1002 has 2M points and carries point normals). The handle sits on
+point 0 (on a sphere, the point nearest (0.5, 0, 0), on the equator) with a radius of 3% of the
+bounding-box diagonal, or a third of the ROI radius if that is less; the ROI radius is
 ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode name (None,
-Explicit, Implicit or ARAP; default None). The view is 800 x 600. Prints one JSON
-line to LAPLACIAN_BENCH_OUTPUT (default: standard output), with the milliseconds a frame spends
-updating the pipeline to the filter's output and the rest (the widget, ParaView's
-representation and the rendering)."""
+Explicit, Implicit or ARAP; default None). The view is 800 x 600. Before the drag, ten still
+renders of the same scene are timed (their median is still_ms). Prints one JSON line to
+LAPLACIAN_BENCH_OUTPUT (default: standard output): the first frame's milliseconds (a preview
+builds the still part of the surface there) and the median of the others (frame_ms), of which
+updating the pipeline (filter_ms, without a preview), frame_ms over still_ms, whether the drag
+was previewed, and the release's milliseconds (its update and render)."""
 import json
 import math
 import os
@@ -20,25 +27,31 @@ import sys
 import time
 import traceback
 
-args = os.environ["LAPLACIAN_BENCH"].split()
-mesh_path, fraction = args[0], float(args[1])
-frames = int(args[2]) if len(args) > 2 else 60
-mode = args[3] if len(args) > 3 else "None"
-mode = {"ARAP": "As rigid as possible"}.get(mode, mode)
-out = open(os.environ["LAPLACIAN_BENCH_OUTPUT"], "w") if "LAPLACIAN_BENCH_OUTPUT" in os.environ else sys.stdout
-status = 1
-try:
-    import paraview.simple as simple
 
-    reader = simple.OpenDataFile(mesh_path)
-    surface = simple.ExtractSurface(Input=reader)
-    triangles = simple.Triangulate(Input=surface)
+def load(mesh_path):
+    """The surface, as triangles."""
+    import paraview.simple as simple
+    if mesh_path.startswith("sphere:"):
+        theta, phi = (int(n) for n in mesh_path[len("sphere:"):].split("x"))
+        return simple.Sphere(ThetaResolution=theta, PhiResolution=phi)
+    surface = simple.ExtractSurface(Input=simple.OpenDataFile(mesh_path))
+    return simple.Triangulate(Input=surface)
+
+
+def edit(triangles, mesh_path, fraction, mode):
+    """The deformation filter on the handle's vertex, shown in an 800 x 600 view."""
+    import paraview.simple as simple
     triangles.UpdatePipeline()
     data = triangles.GetClientSideObject().GetOutput()
     diagonal = data.GetLength()
     deform = simple.LaplacianDeformation(Input=triangles)
-    deform.HandleCenter = list(data.GetPoint(0))
-    deform.HandleRadius = 0.03 * diagonal
+    handle = 0
+    if mesh_path.startswith("sphere:"):
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        xyz = vtk_to_numpy(data.GetPoints().GetData())
+        handle = int(((xyz - [0.5, 0.0, 0.0]) ** 2).sum(axis=1).argmin())
+    deform.HandleCenter = list(data.GetPoint(handle))
+    deform.HandleRadius = min(0.03, fraction / 3.0) * diagonal
     deform.ROIRadius = fraction * diagonal
     deform.RotationMode = mode
     simple.GetLayout().SetSize(800, 600)
@@ -46,16 +59,31 @@ try:
     simple.Show(deform, view)
     simple.ResetCamera(view)
     simple.Render(view)
+    return deform, view
 
-    def info(name):
-        deform.UpdatePropertyInformation()
-        return deform.GetProperty(name).SMProperty.GetElement(0)
 
+def still_render_seconds(view):
+    """The median of ten still renders of the unchanged scene."""
+    stills = []
+    for _ in range(10):
+        before = time.perf_counter()
+        view.StillRender()
+        stills.append(time.perf_counter() - before)
+    return sorted(stills)[len(stills) // 2]
+
+
+def unchecked(prop):
+    return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfElements())]
+
+
+def drag(deform, view, frames):
+    """Drags the handle up by 2 pixels a frame; returns each frame's seconds, those of the
+    pipeline updates among them, of the release, and whether the preview drew the drag."""
+    import paraview.simple as simple
     translation = deform.GetProperty("HandleTranslation").SMProperty
-
-    def unchecked(prop):
-        return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfElements())]
-
+    hidden = view.SMProxy.GetProperty("HiddenRepresentations")
+    widget = next(hidden.GetProxy(i) for i in range(hidden.GetNumberOfProxies())
+                  if hidden.GetProxy(i).GetXMLName() == "DeformationHandleWidgetRepresentation")
     renderer, interactor = view.GetRenderer(), view.GetInteractor()
     renderer.SetWorldPoint(*deform.HandleCenter, 1.0)
     renderer.WorldToDisplay()
@@ -68,28 +96,62 @@ try:
     simple.GetSettingsProxy("GeneralSettings").AutoApply = 1
     send("MouseMoveEvent", y)
     send("LeftButtonPressEvent", y)
-    factorizations = info("NumberOfFactorizations")
-    start = time.perf_counter()
-    update = 0.0  # of which the pipeline update up to the filter's output
+    times, update, previewed = [], 0.0, True
     for frame in range(1, frames + 1):
+        start = time.perf_counter()
         send("MouseMoveEvent", y + 2 * frame)
-        deform.HandleTranslation = unchecked(translation)
-        before = time.perf_counter()
-        deform.UpdatePipeline()
-        update += time.perf_counter() - before
+        widget.UpdatePropertyInformation()
+        previewed = previewed and widget.GetProperty("PreviewShownInfo").GetElement(0) == 1
+        if not previewed:
+            deform.HandleTranslation = unchecked(translation)  # Auto Apply's apply
+            before = time.perf_counter()
+            deform.UpdatePipeline()
+            update += time.perf_counter() - before
         simple.Render(view)
-    seconds = time.perf_counter() - start
+        times.append(time.perf_counter() - start)
+    before = time.perf_counter()
     send("LeftButtonReleaseEvent", y + 2 * frames)
-    deform.UpdatePropertyInformation()
-    roi = sum(1 for i in range(deform.GetClientSideObject().GetOutput().GetNumberOfPoints())
-              if deform.GetClientSideObject().GetOutput().GetPointData().GetArray("EditRole").GetValue(i) > 0)
-    print(json.dumps({"mesh": os.path.basename(mesh_path), "mode": mode, "roi_points": roi,
-                      "frames": frames, "fps": round(frames / seconds, 2),
+    deform.HandleTranslation = unchecked(translation)  # Auto Apply's apply, settled
+    deform.UpdatePipeline()
+    simple.Render(view)
+    return times, update, time.perf_counter() - before, previewed
+
+
+def main(out):
+    args = os.environ["LAPLACIAN_BENCH"].split()
+    mesh_path, fraction = args[0], float(args[1])
+    frames = int(args[2]) if len(args) > 2 else 60
+    mode = args[3] if len(args) > 3 else "None"
+    mode = {"ARAP": "As rigid as possible"}.get(mode, mode)
+    deform, view = edit(load(mesh_path), mesh_path, fraction, mode)
+    still = still_render_seconds(view)
+
+    def info(name):
+        deform.UpdatePropertyInformation()
+        return deform.GetProperty(name).SMProperty.GetElement(0)
+
+    factorizations = info("NumberOfFactorizations")
+    times, update, release, previewed = drag(deform, view, frames)
+    frame = sorted(times[1:] or times)[len(times[1:] or times) // 2]
+    translation = deform.GetProperty("HandleTranslation").SMProperty
+    print(json.dumps({"mesh": os.path.basename(mesh_path), "mode": mode,
+                      "roi_vertices": info("NumberOfROIVertices"), "frames": frames,
+                      "previewed": previewed, "fps": round(frames / sum(times), 2),
+                      "first_frame_ms": round(1000.0 * times[0], 1),
+                      "frame_ms": round(1000.0 * frame, 2),
+                      "still_ms": round(1000.0 * still, 2),
+                      "frame_over_still": round(frame / still, 2),
                       "filter_ms": round(1000.0 * update / frames, 2),
-                      "render_ms": round(1000.0 * (seconds - update) / frames, 2),
+                      "release_ms": round(1000.0 * release, 1),
                       "moved": math.dist(unchecked(translation), [0.0, 0.0, 0.0]),
                       "refactorizations": info("NumberOfFactorizations") - factorizations}),
           file=out, flush=True)
+
+
+out = open(os.environ["LAPLACIAN_BENCH_OUTPUT"], "w") if "LAPLACIAN_BENCH_OUTPUT" in os.environ else sys.stdout
+status = 1
+try:
+    main(out)
     status = 0
 except Exception:
     print(traceback.format_exc(), file=out, flush=True)

@@ -1,0 +1,141 @@
+#include "vtkDeformationHandlePreview.h"
+
+#include "vtkLaplacianDeformationFilter.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+
+namespace
+{
+// Whether `data` (or one of its blocks) has the points `points` draws.
+bool HasPoints(vtkDataObject* data, vtkDataArray* points)
+{
+  if (auto* pointSet = vtkPointSet::SafeDownCast(data))
+  {
+    return pointSet->GetPoints() && pointSet->GetPoints()->GetData() == points;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return false;
+  }
+  auto blocks = vtk::TakeSmartPointer(composite->NewIterator());
+  for (blocks->InitTraversal(); !blocks->IsDoneWithTraversal(); blocks->GoToNextItem())
+  {
+    if (HasPoints(blocks->GetCurrentDataObject(), points))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+vtkDeformationHandlePreview::vtkDeformationHandlePreview()
+{
+  for (int part = 0; part < 2; ++part)
+  {
+    this->Parts[part]->SetMapper(this->Mappers[part]);
+    this->Parts[part]->VisibilityOff();
+  }
+}
+
+vtkDeformationHandlePreview::~vtkDeformationHandlePreview()
+{
+  this->Hide();
+}
+
+std::array<vtkActor*, 2> vtkDeformationHandlePreview::Actors()
+{
+  return { this->Parts[0], this->Parts[1] };
+}
+
+bool vtkDeformationHandlePreview::Show(vtkRenderer* renderer,
+  vtkLaplacianDeformationFilter* filter, const double translation[3], const double rotation[3])
+{
+  const std::array<double, 6> motion = { translation[0], translation[1], translation[2],
+    rotation[0], rotation[1], rotation[2] };
+  if (this->Consumer && motion == this->Shown)
+  {
+    return true;
+  }
+  vtkActor* consumer = this->Consumer ? this->Consumer.GetPointer()
+    : renderer && filter          ? FindConsumer(renderer, filter)
+                                  : nullptr;
+  if (!consumer || !filter->PreviewHandleMotion(translation, rotation))
+  {
+    this->Hide();
+    return false;
+  }
+  if (!this->Consumer)
+  {
+    this->Consumer = consumer;
+    this->ConsumerVisibility = consumer->GetVisibility();
+    this->CopyLook(consumer);
+    consumer->VisibilityOff();
+  }
+  this->Mappers[0]->SetInputData(filter->GetPreviewStillPart());
+  this->Mappers[1]->SetInputData(filter->GetPreviewMovingPart());
+  this->Shown = motion;
+  return true;
+}
+
+void vtkDeformationHandlePreview::Hide()
+{
+  for (vtkActor* part : this->Actors())
+  {
+    part->VisibilityOff();
+  }
+  if (this->Consumer)
+  {
+    this->Consumer->SetVisibility(this->ConsumerVisibility);
+  }
+  this->Consumer = nullptr;
+}
+
+void vtkDeformationHandlePreview::CopyLook(vtkActor* consumer)
+{
+  for (int part = 0; part < 2; ++part)
+  {
+    // The actor's property, texture and placement; the mapper's colouring (lookup table, scalar
+    // mode, array).
+    this->Parts[part]->ShallowCopy(consumer);
+    this->Parts[part]->SetMapper(this->Mappers[part]);
+    this->Parts[part]->VisibilityOn();
+    if (vtkMapper* mapper = consumer->GetMapper())
+    {
+      this->Mappers[part]->ShallowCopy(mapper);
+    }
+  }
+}
+
+vtkActor* vtkDeformationHandlePreview::FindConsumer(
+  vtkRenderer* renderer, vtkLaplacianDeformationFilter* filter)
+{
+  vtkPoints* points = filter->GetOutput()->GetPoints();
+  if (!points)
+  {
+    return nullptr;
+  }
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    vtkMapper* mapper = actor->GetMapper();
+    if (actor->GetVisibility() && mapper &&
+      HasPoints(mapper->GetInputDataObject(0, 0), points->GetData()))
+    {
+      return actor;
+    }
+  }
+  return nullptr;
+}
