@@ -6,7 +6,9 @@ widget in it, with the baseline; then drive that widget with mouse events sent t
 interactor, as Qt would:
   - a drag of the sphere moves the handle with the cursor, and, once applied, the output's
     handle points, with no refactorization; with Auto Apply, the filter's Dragging is on during
-    the drag (a few ARAP iterations a frame) and off after it;
+    the drag (a few ARAP iterations a frame) and off after it, and the widget's preview draws
+    the moving surface (the view mid-drag shows what it shows once applied, not the surface of
+    before), and the applied result is pvbatch's for the same properties;
   - a sweep along the handle's z ring (not the view axis) turns it by the angle swept;
   - a click on the surface puts the handle centre on the clicked point and commits the edit;
   - in array mode with a second handle group, that group's own handle appears at its centroid,
@@ -66,17 +68,30 @@ try:
     view.GetRenderWindow().AddObserver("EndEvent", lambda *_: renders.__setitem__(0, renders[0] + 1))
 
     dragging = []  # the filter's Dragging after each move of the last drag
+    previewed = []  # whether the handle widget's preview showed, after each move
 
-    def drag(path, steps=12):
+    def handle_widget():
+        hidden = view.SMProxy.GetProperty("HiddenRepresentations")
+        widgets = [hidden.GetProxy(k) for k in range(hidden.GetNumberOfProxies())]
+        return next(w for w in widgets if w.GetXMLName() == "DeformationHandleWidgetRepresentation"
+                    and w.GetProperty("Enabled").GetElement(0))
+
+    def drag(path, steps=12, before_release=None):
         """Returns the number of renders during the moves."""
         send("MouseMoveEvent", path(0.0))
         send("LeftButtonPressEvent", path(0.0))
         renders[0] = 0
         dragging.clear()
+        previewed.clear()
+        widget = handle_widget()
         for k in range(1, steps + 1):
             send("MouseMoveEvent", path(k / steps))
             dragging.append(info("Dragging"))
+            widget.UpdatePropertyInformation()
+            previewed.append(widget.GetProperty("PreviewShownInfo").GetElement(0))
         during = renders[0]
+        if before_release:
+            before_release()
         send("LeftButtonReleaseEvent", path(1.0))
         return during
 
@@ -95,6 +110,31 @@ try:
         points = [edited.GetPoint(i) for i in range(edited.GetNumberOfPoints()) if roles.GetValue(i) == 3]
         return [sum(p[i] for p in points) / len(points) for i in range(3)]
 
+    def check_preview_and_pvbatch():
+        """The last drag's view mid-drag against the applied one and the one before, and the
+        applied surface against pvbatch's for the same properties."""
+        SaveScreenshot(output + ".applied.png", view, ImageResolution=[600, 500])
+        differs = scene.compare_with_baseline(output + ".preview.png", output + ".before.png", 1.0)
+        same = scene.compare_with_baseline(output + ".preview.png", output + ".applied.png", 1.0)
+        check(not same and differs, f"mid-drag, the view shows the applied surface ({same}), "
+              f"not the surface of before ({'differs' if differs else 'the same'})")
+        import json
+        import subprocess
+        import tempfile
+        names = ("HandleCenter", "HandleRadius", "ROIRadius", "HandleTranslation", "HandleRotation")
+        properties = {name: deform.GetPropertyValue(name) for name in names}
+        properties = {k: (list(v) if hasattr(v, "__len__") else v) for k, v in properties.items()}
+        properties["RotationMode"] = deform.GetProperty("RotationMode").GetData()
+        with tempfile.NamedTemporaryFile(suffix=".txt") as points:
+            subprocess.run([os.environ["LAPLACIAN_PVBATCH"], os.path.join(os.environ["LAPLACIAN_TESTING_DIR"],
+                            "ScriptedEdit.py"), os.environ["LAPLACIAN_PLUGIN"], json.dumps(properties),
+                            points.name], check=True, capture_output=True)
+            scripted = [[float(c) for c in line.split()] for line in open(points.name)]
+        edited = deform.GetClientSideObject().GetOutput()
+        worst = max(math.dist(edited.GetPoint(i), p) for i, p in enumerate(scripted))
+        check(len(scripted) == edited.GetNumberOfPoints() and worst < 1e-9,
+              f"the applied drag's surface is pvbatch's for its properties (largest distance {worst:.1e})")
+
     # Closer, looking at the handle, for the drags.
     camera = view.GetActiveCamera()
     camera.SetFocalPoint(*[c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)])
@@ -112,12 +152,15 @@ try:
     # With Auto Apply, which renders each applied move, the widget does not render the view too.
     settings = GetSettingsProxy("GeneralSettings")
     settings.AutoApply = 1
-    during = drag(lambda t: (at[0], at[1] + 40.0 * t))
+    SaveScreenshot(output + ".before.png", view, ImageResolution=[600, 500])
+    during = drag(lambda t: (at[0], at[1] + 40.0 * t),
+                  before_release=lambda: SaveScreenshot(output + ".preview.png", view, ImageResolution=[600, 500]))
     settings.AutoApply = 0
     check(during == 0 and view.GetProperty("EnableRenderOnInteraction").GetData() == 1,
           f"with Auto Apply, the drag leaves rendering to it ({during} renders), then restores the view's")
     check(dragging == [1] * 12 and info("Dragging") == 0,
           f"and turns the filter's Dragging on during it ({dragging}), off after it")
+    check(previewed == [1] * 12, f"the widget's preview draws every move ({previewed})")
     translation = unchecked("HandleTranslation")
     moved = [c + t for c, t in zip(unchecked("HandleCenter"), translation)]
     landed = display(moved)
@@ -133,6 +176,7 @@ try:
     check(max(abs(s - e) for s, e in zip(shift, expected)) < 2e-3,
           f"the output's handle points follow the drag once applied ({shift} for {expected})")
     check(info("NumberOfFactorizations") == factorizations, "the drag does not refactor")
+    check_preview_and_pvbatch()
 
     # 2. Turn about the handle's x axis, 40 degrees from the view direction: sweep 40 degrees
     #    along the x ring, from its point in front of the sphere and outside its disc.
