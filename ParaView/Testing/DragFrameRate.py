@@ -72,26 +72,17 @@ def still_render_seconds(view):
     return sorted(stills)[len(stills) // 2]
 
 
-def unchecked(prop):
-    return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfElements())]
-
-
 def drag(deform, view, frames):
     """Drags the handle up by 2 pixels a frame; returns each frame's seconds, those of the
     pipeline updates among them, of the release, and whether the preview drew the drag."""
     import paraview.simple as simple
-    translation = deform.GetProperty("HandleTranslation").SMProperty
-    hidden = view.SMProxy.GetProperty("HiddenRepresentations")
-    widget = next(hidden.GetProxy(i) for i in range(hidden.GetNumberOfProxies())
-                  if hidden.GetProxy(i).GetXMLName() == "DeformationHandleWidgetRepresentation")
-    renderer, interactor = view.GetRenderer(), view.GetInteractor()
-    renderer.SetWorldPoint(*deform.HandleCenter, 1.0)
-    renderer.WorldToDisplay()
-    x, y = (int(round(c)) for c in renderer.GetDisplayPoint()[:2])
+    import ViewEvents as gui
+    widget = gui.handle_widgets(view)[0]
+    events = gui.ViewEvents(view)
+    x, y = events.display(deform.HandleCenter)
 
     def send(name, y_now):
-        interactor.SetEventInformation(x, y_now, 0, 0)
-        interactor.InvokeEvent(name)
+        events.send(name, (x, y_now))
 
     simple.GetSettingsProxy("GeneralSettings").AutoApply = 1
     send("MouseMoveEvent", y)
@@ -103,7 +94,7 @@ def drag(deform, view, frames):
         widget.UpdatePropertyInformation()
         previewed = previewed and widget.GetProperty("PreviewShownInfo").GetElement(0) == 1
         if not previewed:
-            deform.HandleTranslation = unchecked(translation)  # Auto Apply's apply
+            deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")  # Auto Apply
             before = time.perf_counter()
             deform.UpdatePipeline()
             update += time.perf_counter() - before
@@ -111,7 +102,7 @@ def drag(deform, view, frames):
         times.append(time.perf_counter() - start)
     before = time.perf_counter()
     send("LeftButtonReleaseEvent", y + 2 * frames)
-    deform.HandleTranslation = unchecked(translation)  # Auto Apply's apply, settled
+    deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")  # Auto Apply, settled
     deform.UpdatePipeline()
     simple.Render(view)
     return times, update, time.perf_counter() - before, previewed
@@ -133,7 +124,6 @@ def main(out):
     factorizations = info("NumberOfFactorizations")
     times, update, release, previewed = drag(deform, view, frames)
     frame = sorted(times[1:] or times)[len(times[1:] or times) // 2]
-    translation = deform.GetProperty("HandleTranslation").SMProperty
     print(json.dumps({"mesh": os.path.basename(mesh_path), "mode": mode,
                       "roi_vertices": info("NumberOfROIVertices"), "frames": frames,
                       "previewed": previewed, "fps": round(frames / sum(times), 2),
@@ -143,11 +133,13 @@ def main(out):
                       "frame_over_still": round(frame / still, 2),
                       "filter_ms": round(1000.0 * update / frames, 2),
                       "release_ms": round(1000.0 * release, 1),
-                      "moved": math.dist(unchecked(translation), [0.0, 0.0, 0.0]),
+                      "moved": math.dist(deform.HandleTranslation, [0.0, 0.0, 0.0]),
                       "refactorizations": info("NumberOfFactorizations") - factorizations}),
           file=out, flush=True)
 
 
+# Run from the repository's root, or with LAPLACIAN_TESTING_DIR (the GUI's script has no __file__).
+sys.path.insert(0, os.environ.get("LAPLACIAN_TESTING_DIR", os.path.join("ParaView", "Testing")))
 out = open(os.environ["LAPLACIAN_BENCH_OUTPUT"], "w") if "LAPLACIAN_BENCH_OUTPUT" in os.environ else sys.stdout
 status = 1
 try:

@@ -20,22 +20,12 @@ import sys
 import traceback
 
 output, baseline = os.environ["LAPLACIAN_GUI_OUTPUT"], os.environ["LAPLACIAN_GUI_BASELINE"]
-failures = []
-log = open(output + ".log", "w")  # the GUI's own output does not reach the console
+sys.path.insert(0, os.environ["LAPLACIAN_TESTING_DIR"])
+import ViewEvents as gui  # noqa: E402
 
-
-def say(text):
-    print(text, file=log, flush=True)
-
-
-def check(condition, what):
-    say(("ok: " if condition else "FAILED: ") + what)
-    if not condition:
-        failures.append(what)
-
-
+checks = gui.Checks(output)
+say, check = checks.say, checks.check
 try:
-    sys.path.insert(0, os.environ["LAPLACIAN_TESTING_DIR"])
     from paraview.simple import (GetActiveViewOrCreate, GetSettingsProxy, Render, ResetCamera,
                                  SaveScreenshot)
     import LaplacianDeformationScene as scene
@@ -47,34 +37,21 @@ try:
         Render(view)
     SaveScreenshot(output, view, ImageResolution=[600, 500])
     # A GUI rendering may differ a little from pvpython's: a looser threshold than VTK's 0.05.
-    failures += scene.compare_with_baseline(output, baseline, 1.0)
+    for failure in scene.compare_with_baseline(output, baseline, 1.0):
+        checks.fail(failure)
 
     def info(name):
         deform.UpdatePropertyInformation()
         return deform.GetProperty(name).SMProperty.GetElement(0)
 
-    renderer, interactor = view.GetRenderer(), view.GetInteractor()
-
-    def display(point):
-        renderer.SetWorldPoint(point[0], point[1], point[2], 1.0)
-        renderer.WorldToDisplay()
-        return renderer.GetDisplayPoint()[:2]
-
-    def send(name, at, control=0):
-        interactor.SetEventInformation(int(round(at[0])), int(round(at[1])), control, 0)
-        interactor.InvokeEvent(name)
+    events = gui.ViewEvents(view)
+    renderer, display, send = events.renderer, events.display, events.send
 
     renders = [0]
     view.GetRenderWindow().AddObserver("EndEvent", lambda *_: renders.__setitem__(0, renders[0] + 1))
 
     dragging = []  # the filter's Dragging after each move of the last drag
     previewed = []  # whether the handle widget's preview showed, after each move
-
-    def handle_widget():
-        hidden = view.SMProxy.GetProperty("HiddenRepresentations")
-        widgets = [hidden.GetProxy(k) for k in range(hidden.GetNumberOfProxies())]
-        return next(w for w in widgets if w.GetXMLName() == "DeformationHandleWidgetRepresentation"
-                    and w.GetProperty("Enabled").GetElement(0))
 
     def drag(path, steps=12, before_release=None):
         """Returns the number of renders during the moves."""
@@ -83,7 +60,7 @@ try:
         renders[0] = 0
         dragging.clear()
         previewed.clear()
-        widget = handle_widget()
+        widget = gui.handle_widgets(view)[0]
         for k in range(1, steps + 1):
             send("MouseMoveEvent", path(k / steps))
             dragging.append(info("Dragging"))
@@ -96,8 +73,7 @@ try:
         return during
 
     def unchecked(name):
-        prop = deform.GetProperty(name).SMProperty
-        return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfUncheckedElements())]
+        return gui.unchecked(deform, name)
 
     def apply():
         for name in ("HandleCenter", "HandleTranslation", "HandleRotation"):
@@ -118,18 +94,7 @@ try:
         same = scene.compare_with_baseline(output + ".preview.png", output + ".applied.png", 1.0)
         check(not same and differs, f"mid-drag, the view shows the applied surface ({same}), "
               f"not the surface of before ({'differs' if differs else 'the same'})")
-        import json
-        import subprocess
-        import tempfile
-        names = ("HandleCenter", "HandleRadius", "ROIRadius", "HandleTranslation", "HandleRotation")
-        properties = {name: deform.GetPropertyValue(name) for name in names}
-        properties = {k: (list(v) if hasattr(v, "__len__") else v) for k, v in properties.items()}
-        properties["RotationMode"] = deform.GetProperty("RotationMode").GetData()
-        with tempfile.NamedTemporaryFile(suffix=".txt") as points:
-            subprocess.run([os.environ["LAPLACIAN_PVBATCH"], os.path.join(os.environ["LAPLACIAN_TESTING_DIR"],
-                            "ScriptedEdit.py"), os.environ["LAPLACIAN_PLUGIN"], json.dumps(properties),
-                            points.name], check=True, capture_output=True)
-            scripted = [[float(c) for c in line.split()] for line in open(points.name)]
+        scripted = gui.scripted_points(gui.applied_properties(deform))
         edited = deform.GetClientSideObject().GetOutput()
         worst = max(math.dist(edited.GetPoint(i), p) for i, p in enumerate(scripted))
         check(len(scripted) == edited.GetNumberOfPoints() and worst < 1e-9,
@@ -284,10 +249,7 @@ try:
     check(info("NumberOfFactorizations") == factorizations, "the group drag does not refactor")
 
     def enabled_handles():
-        hidden = view.SMProxy.GetProperty("HiddenRepresentations")
-        widgets = [hidden.GetProxy(k) for k in range(hidden.GetNumberOfProxies())]
-        return sum(1 for w in widgets if w.GetXMLName() == "DeformationHandleWidgetRepresentation"
-                   and w.GetProperty("Enabled").GetElement(0))
+        return len(gui.handle_widgets(view))
 
     check(enabled_handles() == 2, f"the view shows a handle for each group ({enabled_handles()})")
     groups.SelectionMode = "Geodesic"
@@ -298,8 +260,5 @@ try:
           f"without the groups, their handles leave the view ({info('NumberOfHandleGroups')} groups, "
           f"{enabled_handles()} handles)")
 except Exception:  # any error must end the run, not open a modal dialog that never closes
-    failures.append(traceback.format_exc())
-    say(failures[-1])
-with open(output + ".result", "w") as result:
-    result.write("\n".join(failures) if failures else "passed")
-os._exit(1 if failures else 0)
+    checks.fail(traceback.format_exc())
+checks.finish()

@@ -1,0 +1,81 @@
+"""Mouse events sent to a ParaView render view's interactor, as Qt would send them, and what the
+panel's widget holds: helpers of the GUI tests and the GUI drag benchmark."""
+import os
+
+
+class ViewEvents:
+    def __init__(self, view):
+        self.renderer, self.interactor = view.GetRenderer(), view.GetInteractor()
+
+    def display(self, point):
+        """The display position of a world point."""
+        self.renderer.SetWorldPoint(point[0], point[1], point[2], 1.0)
+        self.renderer.WorldToDisplay()
+        return self.renderer.GetDisplayPoint()[:2]
+
+    def send(self, name, at, control=0):
+        self.interactor.SetEventInformation(int(round(at[0])), int(round(at[1])), control, 0)
+        self.interactor.InvokeEvent(name)
+
+
+def unchecked(proxy, name):
+    """A property's unapplied values (what the panel's widget set)."""
+    prop = proxy.GetProperty(name).SMProperty
+    return [prop.GetUncheckedElement(i) for i in range(prop.GetNumberOfUncheckedElements())]
+
+
+def handle_widgets(view):
+    """The enabled handle widgets' representations in the view."""
+    hidden = view.SMProxy.GetProperty("HiddenRepresentations")
+    widgets = [hidden.GetProxy(k) for k in range(hidden.GetNumberOfProxies())]
+    return [w for w in widgets if w.GetXMLName() == "DeformationHandleWidgetRepresentation"
+            and w.GetProperty("Enabled").GetElement(0)]
+
+
+def scripted_points(properties):
+    """The points of the tests' scene edited with `properties` by pvbatch (ScriptedEdit.py);
+    LAPLACIAN_PVBATCH, LAPLACIAN_PLUGIN and LAPLACIAN_TESTING_DIR say where things are."""
+    import json
+    import subprocess
+    import tempfile
+    with tempfile.NamedTemporaryFile(suffix=".txt") as points:
+        subprocess.run([os.environ["LAPLACIAN_PVBATCH"],
+                        os.path.join(os.environ["LAPLACIAN_TESTING_DIR"], "ScriptedEdit.py"),
+                        os.environ["LAPLACIAN_PLUGIN"], json.dumps(properties), points.name],
+                       check=True, capture_output=True)
+        return [[float(c) for c in line.split()] for line in open(points.name)]
+
+
+def applied_properties(deform):
+    """The filter's applied handle and region properties, for scripted_points."""
+    names = ("HandleCenter", "HandleRadius", "ROIRadius", "HandleTranslation", "HandleRotation")
+    values = {name: deform.GetPropertyValue(name) for name in names}
+    values = {k: (list(v) if hasattr(v, "__len__") else v) for k, v in values.items()}
+    values["RotationMode"] = deform.GetProperty("RotationMode").GetData()
+    return values
+
+
+class Checks:
+    """A GUI test's checks: each one logged to OUTPUT.log (the GUI's own output does not reach
+    the console), the failures written to OUTPUT.result by finish, which ends the GUI."""
+
+    def __init__(self, output):
+        self.output, self.failures = output, []
+        self.log = open(output + ".log", "w")
+
+    def say(self, text):
+        print(text, file=self.log, flush=True)
+
+    def check(self, condition, what):
+        self.say(("ok: " if condition else "FAILED: ") + what)
+        if not condition:
+            self.failures.append(what)
+
+    def fail(self, what):
+        self.failures.append(what)
+        self.say(what)
+
+    def finish(self):
+        with open(self.output + ".result", "w") as result:
+            result.write("\n".join(self.failures) if self.failures else "passed")
+        os._exit(1 if self.failures else 0)
