@@ -191,10 +191,10 @@ TEST(InPlace, AnArrayHeldElsewhereIsNeverWritten)
   ExpectSameOutput(output, MovedEdit(input, 0.07)->GetOutput(), 1e-12);
 }
 
-TEST(InPlace, ADownstreamOutputAlternatesBetweenTwoBuffers)
+TEST(InPlace, ADownstreamOutputIsRecomputedNotCopied)
 {
-  // A consumer that shallow-copies the output and keeps it until it updates again (as
-  // ParaView's representations do): each move writes the buffer it no longer holds.
+  // A filter downstream shares the output's arrays until the next update recomputes it (as
+  // ParaView's pass-through filter after every source): the moves still write in place.
   auto input = SphereWithNormals();
   auto filter = SphereEdit(input, vtkLaplacianDeformationFilter::ROTATION_NONE);
   vtkNew<vtkPassThrough> downstream;
@@ -205,6 +205,30 @@ TEST(InPlace, ADownstreamOutputAlternatesBetweenTwoBuffers)
     downstream->Update();
     ExpectSameOutput(vtkPolyData::SafeDownCast(downstream->GetOutput()),
       MovedEdit(input, 0.01 * move)->GetOutput(), 1e-12);
+  }
+  EXPECT_EQ(filter->GetNumberOfOutputCopies(), 4); // the first region's, once per array
+}
+
+TEST(InPlace, AConsumerThatKeepsACopyMakesTheMovesAlternateTwoBuffers)
+{
+  // A consumer that keeps a shallow copy of the last output until the next one arrives (a
+  // renderer's cache, ParaView's representations): that copy is never written, and each move
+  // writes the buffer it no longer holds.
+  auto input = SphereWithNormals();
+  auto filter = SphereEdit(input, vtkLaplacianDeformationFilter::ROTATION_NONE);
+  vtkNew<vtkPolyData> cache;
+  for (int move = 1; move <= 6; ++move)
+  {
+    filter->SetHandleTranslation(0.01 * move, 0.0, 0.0);
+    filter->Update();
+    auto kept = Snapshot(cache);
+    cache->ShallowCopy(filter->GetOutput());
+    ExpectSameOutput(cache, MovedEdit(input, 0.01 * move)->GetOutput(), 1e-12);
+    if (move > 1)
+    {
+      EXPECT_EQ(MaxPointDistance(kept, MovedEdit(input, 0.01 * (move - 1))->GetOutput()), 0.0)
+        << "the cache of move " << move - 1 << " was written";
+    }
   }
   // The first region copies each array once, the second buffer of points and normals once more.
   EXPECT_EQ(filter->GetNumberOfOutputCopies(), 4 + 3);
