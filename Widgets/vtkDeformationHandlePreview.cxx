@@ -112,7 +112,9 @@ void vtkDeformationHandlePreview::CopyLook(vtkActor* consumer)
     this->Parts[part]->VisibilityOn();
     if (vtkMapper* mapper = consumer->GetMapper())
     {
-      this->Mappers[part]->ShallowCopy(mapper);
+      // vtkMapper's settings only: the OpenGL mapper's own copy takes its custom shader code
+      // through deprecated accessors, which warn, and the parts have none.
+      this->Mappers[part]->vtkMapper::ShallowCopy(mapper);
     }
   }
 }

@@ -111,9 +111,17 @@ bool vtkDeformationHandleRepresentation::IsPreviewShown() const
   return this->Preview->IsShown();
 }
 
+void vtkDeformationHandleRepresentation::SetVisibility(vtkTypeBool visible)
+{
+  this->Superclass::SetVisibility(visible);
+  this->UpdatePreview();
+}
+
 void vtkDeformationHandleRepresentation::UpdatePreview()
 {
-  if (this->Previewing && this->PreviewFilter && this->Renderer)
+  // The parts are drawn in the representation's passes: a hidden one previews nothing, so that
+  // the output's actor stays.
+  if (this->Previewing && this->PreviewFilter && this->Renderer && this->GetVisibility())
   {
     this->Preview->Show(this->Renderer, this->PreviewFilter, this->Translation, this->RotationAngles);
   }

@@ -136,6 +136,9 @@ public:
   bool IsPreviewShown() const;
   ///@}
 
+  /** A hidden representation shows no preview. */
+  void SetVisibility(vtkTypeBool visible) override;
+
   ///@{
   /**
    * Translate along one axis only (the one the motion follows most). The widget turns it on

@@ -50,6 +50,11 @@ void vtkLaplacianDragPreview::BuildStill(
     fixed->SetLookupTable(roles->GetLookupTable());
     still->GetPointData()->AddArray(fixed);
   }
+  // The output's active scalars (EditRole where the input had none), which a mapper colours by.
+  if (vtkDataArray* scalars = output->GetPointData()->GetScalars())
+  {
+    still->GetPointData()->SetActiveScalars(scalars->GetName());
+  }
   still->SetVerts(rest->GetVerts());
   still->SetLines(rest->GetLines());
   const vtkIdType firstPoly = rest->GetNumberOfVerts() + rest->GetNumberOfLines();

@@ -8,7 +8,8 @@
 // its frame; an eighth moves it along one axis and resizes the region with the wheel; a ninth
 // checks the accessors ParaView drives against the filter's handle properties; a tenth drags
 // two handle groups with a widget each, commits and undoes; an eleventh drags in the
-// as-rigid-as-possible mode, a few iterations a frame, and settles the shape on the release.
+// as-rigid-as-possible mode, a few iterations a frame, and settles the shape on the release; a
+// twelfth previews a motion in place of the surface's actor and draws what the update draws.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 #include "FilterTestHelpers.h"
@@ -30,6 +31,8 @@
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
 #include "vtkWidgetEvent.h"
 #include "vtkWidgetEventTranslator.h"
 
@@ -881,6 +884,84 @@ int ARAPDragCapsIterations()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// What the window shows, as RGB bytes.
+std::vector<unsigned char> Frame(vtkRenderWindow* window)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkDataArray* pixels = grab->GetOutput()->GetPointData()->GetScalars();
+  const auto* bytes = vtkUnsignedCharArray::SafeDownCast(pixels)->GetPointer(0);
+  return { bytes, bytes + pixels->GetNumberOfValues() };
+}
+
+// The share of pixels that differ by more than `tolerance` in a channel.
+double DifferingPixels(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b,
+  int tolerance = 8)
+{
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i + 2 < a.size(); i += 3)
+  {
+    bool differs = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      differs = differs || std::abs(int(a[i + c]) - int(b[i + c])) > tolerance;
+    }
+    differing += differs;
+  }
+  return a.empty() ? 1.0 : 3.0 * differing / a.size();
+}
+
+int PreviewDrawsWhatTheUpdateDraws()
+{
+  // A representation that previews the filter's edit, as ParaView's panel drives one: the
+  // motion set as properties, the pipeline left alone until the motion is applied.
+  Scene scene;
+  vtkNew<vtkDeformationHandleRepresentation> rep;
+  rep->SetRenderer(scene.Renderer);
+  rep->SetCenter(scene.Filter->GetHandleCenter());
+  rep->SetHandleRadius(scene.Filter->GetHandleRadius());
+  rep->SetROIRadius(scene.Filter->GetROIRadius());
+  scene.Renderer->AddViewProp(rep);
+  int updates = 0;
+  vtkNew<vtkCallbackCommand> counter;
+  counter->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  counter->SetClientData(&updates);
+  scene.Filter->AddObserver(vtkCommand::EndEvent, counter);
+  const std::vector<unsigned char> before = Frame(scene.Window);
+
+  rep->SetPreviewFilter(scene.Filter);
+  rep->PreviewingOn();
+  rep->SetTranslation(0.0, -0.05, 0.12);
+  rep->SetRotationAngles(20.0, 0.0, 0.0);
+  Check(rep->IsPreviewShown(), "the preview shows");
+  Check(!scene.SurfaceActor()->GetVisibility(), "the surface's actor is hidden while previewing");
+  const std::vector<unsigned char> previewed = Frame(scene.Window);
+  Check(updates == 0, "previewing updates nothing (" + std::to_string(updates) + " updates)");
+  rep->VisibilityOff();
+  Check(!rep->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
+    "a hidden representation previews nothing");
+  rep->VisibilityOn();
+  Check(rep->IsPreviewShown(), "shown again, it previews");
+
+  rep->PreviewingOff();
+  Check(!rep->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
+    "turning previewing off shows the surface's actor again");
+  scene.Filter->SetHandleTranslation(rep->GetTranslation());
+  scene.Filter->SetHandleRotation(rep->GetRotationAngles());
+  const std::vector<unsigned char> applied = Frame(scene.Window);
+  const double moved = DifferingPixels(before, applied);
+  const double mismatch = DifferingPixels(previewed, applied);
+  std::cout << "pixels the motion changes " << moved << ", pixels where the preview differs from "
+            << "the update " << mismatch << "\n";
+  Check(moved > 0.02, "the motion changes the picture");
+  Check(mismatch < 0.001, "the preview draws what the update draws (0.1% of pixels)");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -912,7 +993,8 @@ int main(int argc, char* argv[])
     { "RotateAboutEachAxis", RotateAboutEachAxis },
     { "ConstrainedMoveAndWheel", ConstrainedMoveAndWheel },
     { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups },
-    { "ARAPDragCapsIterations", ARAPDragCapsIterations } };
+    { "ARAPDragCapsIterations", ARAPDragCapsIterations },
+    { "PreviewDrawsWhatTheUpdateDraws", PreviewDrawsWhatTheUpdateDraws } };
   const auto found = cases.find(argc > 1 ? argv[1] : "");
   if (found != cases.end())
   {

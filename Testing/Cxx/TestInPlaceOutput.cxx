@@ -1,10 +1,13 @@
 // The output written in place: a move writes only its region and the normals around it, an
 // array held elsewhere is never written (copy on write), and moves, new regions and new inputs
-// after in-place writes give what a fresh filter gives.
+// after in-place writes give what a fresh filter gives. The drag preview: refused unless only the
+// handle's motion changed, its moving part is what an update of the same motion writes, and it
+// leaves the output alone.
 #include "FilterTestHelpers.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkIdFilter.h"
 #include "vtkIdList.h"
 #include "vtkPassThrough.h"
 #include "vtkPointData.h"
@@ -277,5 +280,99 @@ TEST(InPlace, NewRegionsAndInputsAfterInPlaceMovesMatchAFreshFilter)
     freshShifted->SetHandleTranslation(0.06, 0.01, 0.0);
     freshShifted->Update();
     ExpectSameOutput(filter->GetOutput(), freshShifted->GetOutput(), 1e-12);
+  }
+}
+
+namespace
+{
+// The sphere with its point and cell ids as arrays, which the preview's parts carry along.
+vtkSmartPointer<vtkPolyData> SphereWithIds()
+{
+  vtkNew<vtkIdFilter> ids;
+  ids->SetInputData(SphereWithNormals());
+  ids->SetPointIdsArrayName("PointIds");
+  ids->SetCellIdsArrayName("CellIds");
+  ids->Update();
+  return vtkPolyData::SafeDownCast(ids->GetOutput());
+}
+}
+
+TEST(Preview, IsRefusedUnlessOnlyTheHandleMotionChanged)
+{
+  auto input = SphereWithIds();
+  auto filter = SphereEdit(input, vtkLaplacianDeformationFilter::ROTATION_NONE);
+  EXPECT_FALSE(filter->PreviewHandleMotion(0.01, 0, 0, 0, 0, 0)) << "before any update";
+  filter->Update();
+  EXPECT_TRUE(filter->PreviewHandleMotion(0.01, 0, 0, 0, 0, 0));
+  filter->SetROIRadius(0.35);
+  EXPECT_FALSE(filter->PreviewHandleMotion(0.01, 0, 0, 0, 0, 0)) << "after a new ROI radius";
+  filter->Update();
+  EXPECT_TRUE(filter->PreviewHandleMotion(0.02, 0, 0, 0, 0, 0));
+  input->GetPoints()->Modified();
+  EXPECT_FALSE(filter->PreviewHandleMotion(0.02, 0, 0, 0, 0, 0)) << "after new input content";
+}
+
+TEST(Preview, TheMovingPartIsWhatAnUpdateOfTheSameMotionWrites)
+{
+  for (const int mode : { vtkLaplacianDeformationFilter::ROTATION_NONE,
+         vtkLaplacianDeformationFilter::ROTATION_EXPLICIT,
+         vtkLaplacianDeformationFilter::ROTATION_IMPLICIT })
+  {
+    SCOPED_TRACE(mode);
+    auto input = SphereWithIds();
+    auto filter = SphereEdit(input, mode);
+    filter->Update();
+    auto before = Snapshot(filter->GetOutput());
+    const vtkMTimeType filterTime = filter->GetMTime();
+    const vtkMTimeType outputTime = filter->GetOutput()->GetMTime();
+    const double translation[3] = { 0.05, 0.02, 0.0 }, rotation[3] = { 0.0, 0.0, 20.0 };
+    ASSERT_TRUE(filter->PreviewHandleMotion(translation, rotation));
+
+    // Neither the filter nor its output changed.
+    EXPECT_EQ(filter->GetMTime(), filterTime);
+    EXPECT_EQ(filter->GetOutput()->GetMTime(), outputTime);
+    EXPECT_EQ(MaxPointDistance(filter->GetOutput(), before), 0.0);
+
+    // Together, the parts hold each polygon once; the still part is at rest.
+    vtkPolyData* still = filter->GetPreviewStillPart();
+    vtkPolyData* moving = filter->GetPreviewMovingPart();
+    EXPECT_EQ(still->GetNumberOfPolys() + moving->GetNumberOfPolys(), input->GetNumberOfPolys());
+    EXPECT_GT(moving->GetNumberOfPolys(), 0);
+    EXPECT_LT(moving->GetNumberOfPoints(), input->GetNumberOfPoints() / 4);
+    EXPECT_EQ(MaxPointDistance(still, input), 0.0);
+    vtkDataArray* scalars = filter->GetOutput()->GetPointData()->GetScalars();
+    ASSERT_NE(scalars, nullptr);
+    ASSERT_NE(still->GetPointData()->GetScalars(), nullptr) << "the still part is coloured alike";
+    EXPECT_STREQ(still->GetPointData()->GetScalars()->GetName(), scalars->GetName());
+
+    // The moving part's points, normals and arrays are the update's, by the input's ids.
+    auto updated = SphereEdit(input, mode);
+    updated->SetHandleTranslation(translation);
+    updated->SetHandleRotation(rotation);
+    updated->Update();
+    vtkPolyData* expected = updated->GetOutput();
+    vtkDataArray* ids = moving->GetPointData()->GetArray("PointIds");
+    ASSERT_NE(ids, nullptr) << "the moving part carries the input's point arrays";
+    ASSERT_NE(moving->GetCellData()->GetArray("CellIds"), nullptr);
+    double worstPoint = 0.0, worstNormal = 0.0;
+    for (vtkIdType i = 0; i < moving->GetNumberOfPoints(); ++i)
+    {
+      const auto id = static_cast<vtkIdType>(ids->GetTuple1(i));
+      double p[3], q[3], n[3], m[3];
+      moving->GetPoint(i, p);
+      expected->GetPoint(id, q);
+      worstPoint = std::max(worstPoint, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+      moving->GetPointData()->GetNormals()->GetTuple(i, n);
+      expected->GetPointData()->GetNormals()->GetTuple(id, m);
+      worstNormal = std::max(worstNormal, std::sqrt(vtkMath::Distance2BetweenPoints(n, m)));
+    }
+    EXPECT_LE(worstPoint, 1e-12 * Diagonal(input));
+    EXPECT_LE(worstNormal, 1e-9);
+
+    // The next update solves and writes as a fresh filter does.
+    filter->SetHandleTranslation(translation);
+    filter->SetHandleRotation(rotation);
+    filter->Update();
+    ExpectSameOutput(filter->GetOutput(), expected, 1e-12);
   }
 }
