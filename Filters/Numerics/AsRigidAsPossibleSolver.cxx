@@ -86,18 +86,33 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   const std::vector<int> patchVertices = this->GrowPatch(mesh, region, patchRow);
   this->WeighEdges(mesh, patchVertices, patchRow, options.Weights, loop);
   this->FindRotationsAroundHandles();
-  const std::string error = this->ChooseUnknowns(region);
-  if (!error.empty())
+  this->Points = PointConstraints();
+  std::string error;
+  if (options.Points)
+  {
+    std::vector<int> roiRow = patchRow;
+    std::replace_if(roiRow.begin(), roiRow.end(),
+      [this](int row) { return row >= this->NumberOfROIVertices; }, -1);
+    error = this->Points.Build(*options.Points, roiRow);
+  }
+  error = error.empty() ? this->ChooseUnknowns(region) : error;
+  if (!error.empty() || this->FreeRows.empty())
   {
     return error;
   }
-  if (this->FreeRows.empty())
+  Eigen::SparseMatrix<double> matrix = this->AssembleFreeLaplacian(loop);
+  if (!this->Points.IsEmpty())
   {
-    return {};
+    this->Points.Weigh(options.PointWeight, matrix);
+    error = this->Points.AddToMatrix(matrix, this->UnknownOfPatch, 1);
+    if (!error.empty())
+    {
+      return error;
+    }
   }
   this->Factor.SetManySolves(true); // a solve every iteration
-  return this->Factor.Factorize(this->AssembleFreeLaplacian(loop), options.Backend,
-    options.Ordering, options.MaximumFactorBytes, 1, options.Distributed);
+  return this->Factor.Factorize(matrix, options.Backend, options.Ordering,
+    options.MaximumFactorBytes, 1, options.Distributed);
 }
 
 std::vector<int> AsRigidAsPossibleSolver::GrowPatch(
@@ -227,9 +242,22 @@ std::string AsRigidAsPossibleSolver::ChooseUnknowns(const EditRegion& region)
       this->FreeRows.push_back(k);
     }
   }
-  // Every connected part of the unknowns must reach a known value, or nothing holds it.
+  // Every connected part of the unknowns must reach a known value or a point, or nothing
+  // holds it.
   std::vector<char> held(this->FreeRows.size(), 0);
   std::vector<int> stack;
+  for (const auto& corners : this->Points.GetRows())
+  {
+    for (const int row : corners)
+    {
+      const int u = this->UnknownOfPatch[row];
+      if (u >= 0 && !held[u])
+      {
+        held[u] = 1;
+        stack.push_back(u);
+      }
+    }
+  }
   for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
   {
     const int i = this->FreeRows[u];
@@ -259,7 +287,7 @@ std::string AsRigidAsPossibleSolver::ChooseUnknowns(const EditRegion& region)
   if (std::find(held.begin(), held.end(), 0) != held.end())
   {
     return "in the as-rigid-as-possible mode every connected part of the region of interest must "
-           "touch a handle or the fixed part: make the ROI smaller than its component";
+           "touch a handle, a landmark or the fixed part: make the ROI smaller than its component";
   }
   return {};
 }
@@ -403,7 +431,8 @@ double AsRigidAsPossibleSolver::Residual(
 }
 
 Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3d>& rotations,
-  const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const
+  const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop,
+  const PointTargets* points) const
 {
   const int free = static_cast<int>(this->FreeRows.size());
   auto& rhs = work.RightHandSide;
@@ -426,21 +455,61 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
       rhs.row(u) = 0.5 * b.transpose();
     }
   });
-  return this->Factor.Solve(rhs, loop);
+  if (this->Points.IsEmpty())
+  {
+    return this->Factor.Solve(rhs, loop);
+  }
+  // The points' pull on the free rows, met exactly or softly (PointConstraints::Fit).
+  Positions roi(this->NumberOfROIVertices, 3);
+  for (int k = 0; k < this->NumberOfROIVertices; ++k)
+  {
+    roi.row(k) = patch[k].transpose();
+  }
+  auto solve = [&](const Positions& targets) {
+    const Positions pull = this->Points.RightHandSide(targets, this->NumberOfROIVertices);
+    Eigen::MatrixXd withPull = rhs;
+    for (int u = 0; u < free; ++u)
+    {
+      withPull.row(u) += pull.row(this->FreeRows[u]);
+    }
+    const Eigen::MatrixXd solution = this->Factor.Solve(withPull, loop);
+    for (int u = 0; u < free; ++u)
+    {
+      roi.row(this->FreeRows[u]) = solution.row(u);
+    }
+    return roi;
+  };
+  // Without targets, the points stay where the rest shape has them.
+  const PointTargets atRest{ this->Points.Evaluate(this->RestPatch.topRows(this->NumberOfROIVertices)), false };
+  Positions solution;
+  double miss = 0.0;
+  this->Points.Fit(solve, points ? *points : atRest, work.PointCorrection, solution, miss);
+  return this->FreePositions(solution);
+}
+
+double AsRigidAsPossibleSolver::PointEnergy(const Positions& roiPositions, const PointTargets* points) const
+{
+  if (this->Points.IsEmpty() || !points || points->Exact || this->RestScale <= 0.0)
+  {
+    return 0.0;
+  }
+  const double squaredMiss = (this->Points.Evaluate(roiPositions) - points->Targets).squaredNorm();
+  return 2.0 * this->Points.GetSquaredWeight() * squaredMiss / this->RestScale;
 }
 
 ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMaps,
   ArapIterate& iterate, const ArapOptions& options, const ParallelFor& loop,
-  std::vector<double>* energies) const
+  std::vector<double>* energies, const PointTargets* points) const
 {
   ArapIterate::Workspace& work = iterate.Work;
   // A solve that continues the last one (its rotations still fit the points) with moved
   // handles may extrapolate; otherwise only the handle rows move between solves, and the first
   // local step redoes only the rotations around the handles (the others would come out the same).
   const bool continues = work.RotationsFitPoints;
-  const bool extrapolate = this->Extrapolate(handleMaps, iterate, options);
+  const bool extrapolate = this->Extrapolate(handleMaps, points, iterate, options);
   ArapResult result;
-  result.Energy = this->LocalStep(handleMaps, iterate, loop, continues && !extrapolate);
+  result.Energy = this->LocalStep(handleMaps, iterate, loop, continues && !extrapolate) +
+    this->PointEnergy(iterate.Points, points);
   if (this->FreeRows.empty() || options.MaximumIterations <= 0)
   {
     return result;
@@ -454,14 +523,14 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   recent[0] = result.Energy;
   for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
   {
-    const Eigen::MatrixXd g = this->Global(work.Rotations, work.Patch, work, loop);
+    const Eigen::MatrixXd g = this->Global(work.Rotations, work.Patch, work, loop, points);
     const bool accelerated = ring.Mix(g, x, options.Accelerate, work, next);
-    double energy = this->Evaluate(next, iterate, loop);
+    double energy = this->Evaluate(next, iterate, loop) + this->PointEnergy(work.Candidate, points);
     if (energy > result.Energy && accelerated)
     {
       // The accelerated iterate did not lower the energy: take the plain one, start over.
       next = g;
-      energy = this->Evaluate(next, iterate, loop);
+      energy = this->Evaluate(next, iterate, loop) + this->PointEnergy(work.Candidate, points);
       ring.Restart();
     }
     iterate.Points.swap(work.Candidate);
@@ -494,17 +563,22 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   return result;
 }
 
-bool AsRigidAsPossibleSolver::Extrapolate(
-  const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ArapOptions& options) const
+bool AsRigidAsPossibleSolver::Extrapolate(const std::vector<AffineMap>& handleMaps,
+  const PointTargets* targets, ArapIterate& iterate, const ArapOptions& options) const
 {
   // A solve that follows one which barely moved (the first move after a setup) has nothing to
   // extrapolate: it starts from afar, as a jump.
   Positions& points = iterate.Points;
+  const Positions noTargets;
+  const Positions& pointTargets = targets ? targets->Targets : noTargets;
+  const bool targetsMoved = pointTargets.rows() != iterate.BeforeTargets.rows() ||
+    (pointTargets.array() != iterate.BeforeTargets.array()).any();
   const bool extrapolate = iterate.Work.RotationsFitPoints && options.Extrapolate &&
     options.MaximumIterations > 0 && iterate.Before.rows() == points.rows() &&
-    handleMaps != iterate.BeforeMaps &&
+    (handleMaps != iterate.BeforeMaps || targetsMoved) &&
     (points - iterate.Before).cwiseAbs().maxCoeff() > 1e-9 * this->RestExtent;
   iterate.BeforeMaps = handleMaps;
+  iterate.BeforeTargets = pointTargets;
   if (extrapolate)
   {
     iterate.Work.Candidate = points;
@@ -543,22 +617,23 @@ double AsRigidAsPossibleSolver::Evaluate(
   return this->Rotate(work.Patch, work.CandidateRotations, work.CandidateQuaternions, work, loop);
 }
 
-ArapIterate AsRigidAsPossibleSolver::InitialGuess(const std::vector<AffineMap>& handleMaps) const
+ArapIterate AsRigidAsPossibleSolver::InitialGuess(
+  const std::vector<AffineMap>& handleMaps, const PointTargets* points) const
 {
   ArapIterate guess;
   guess.Points = this->RestPatch.topRows(this->NumberOfROIVertices);
   this->LocalStep(handleMaps, guess, SerialFor, false);
   const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
-  this->GlobalStep(identities, guess, SerialFor);
+  this->GlobalStep(identities, guess, SerialFor, points);
   guess.Rotations.clear(); // those of the rest positions, not of the guess
   return guess;
 }
 
-void AsRigidAsPossibleSolver::Straighten(
-  const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const
+void AsRigidAsPossibleSolver::Straighten(const std::vector<AffineMap>& handleMaps,
+  ArapIterate& iterate, const ParallelFor& loop, const PointTargets* points) const
 {
   this->LocalStep(handleMaps, iterate, loop, false);
-  this->GlobalStep(iterate.Work.Rotations, iterate, loop);
+  this->GlobalStep(iterate.Work.Rotations, iterate, loop, points);
 }
 
 double AsRigidAsPossibleSolver::LocalStep(const std::vector<AffineMap>& handleMaps,
@@ -583,11 +658,12 @@ double AsRigidAsPossibleSolver::LocalStep(const std::vector<AffineMap>& handleMa
 }
 
 void AsRigidAsPossibleSolver::GlobalStep(const std::vector<Eigen::Matrix3d>& rotations,
-  ArapIterate& iterate, const ParallelFor& loop) const
+  ArapIterate& iterate, const ParallelFor& loop, const PointTargets* points) const
 {
   if (!this->FreeRows.empty())
   {
-    const Eigen::MatrixXd free = this->Global(rotations, iterate.Work.Patch, iterate.Work, loop);
+    const Eigen::MatrixXd free =
+      this->Global(rotations, iterate.Work.Patch, iterate.Work, loop, points);
     for (std::size_t u = 0; u < this->FreeRows.size(); ++u)
     {
       iterate.Points.row(this->FreeRows[u]) = free.row(u);

@@ -63,9 +63,11 @@ struct ArapIterate
 {
   Positions Points;
   Quaternions Rotations;
-  /// The points at the start of the last solve and its handle maps, for ArapOptions::Extrapolate.
+  /// The points at the start of the last solve, its handle maps and point targets, for
+  /// ArapOptions::Extrapolate.
   Positions Before;
   std::vector<AffineMap> BeforeMaps;
+  Positions BeforeTargets;
 
   /// Buffers the iterations reuse, kept with the iterate so that the updates of a drag do not
   /// allocate: on regions of tens of thousands of vertices, the first touch of fresh memory
@@ -79,6 +81,8 @@ struct ArapIterate
     Positions Candidate;
     std::vector<double> Residuals;
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> RightHandSide;
+    // An exact fit's correction of the point targets (PointConstraints::Fit), carried over.
+    Positions PointCorrection;
     // Anderson acceleration's history (columns) and last iterate.
     Eigen::MatrixXd GDifferences;
     Eigen::MatrixXd FDifferences;
@@ -101,44 +105,54 @@ struct ArapResult
 class AsRigidAsPossibleSolver
 {
 public:
-  /// Assembles and factors L_ff. Returns an error message, empty on success.
+  /// Assembles and factors L_ff, with the points' soft constraints if the options have points
+  /// (w^2 B^T B added; a point may not touch a handle). Returns an error message, empty on
+  /// success.
   std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
     const DeformationOptions& options, const ParallelFor& loop = SerialFor);
 
   /// Iterates from `iterate`, whose handle rows are first set to their targets (after the
-  /// extrapolation, if any). `energies`, if given, receives the energy after each iteration.
+  /// extrapolation, if any), with the points pulled to `points` (required if the solver has
+  /// points): softly, the energy then adds 2 w^2 |B x - t|^2, or exactly, every global step
+  /// meeting them. `energies`, if given, receives the energy after each iteration.
   ArapResult Solve(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
     const ArapOptions& options, const ParallelFor& loop = SerialFor,
-    std::vector<double>* energies = nullptr) const;
+    std::vector<double>* energies = nullptr, const PointTargets* points = nullptr) const;
 
   /// One global step with every rotation the identity: the start of a first solve (the
   /// reconstruction from the rest edges, as the none mode with hard constraints).
-  ArapIterate InitialGuess(const std::vector<AffineMap>& handleMaps) const;
+  ArapIterate InitialGuess(
+    const std::vector<AffineMap>& handleMaps, const PointTargets* points = nullptr) const;
 
   /// One local step at `iterate.Points`, then one global step: the rigid correction of another
   /// mode's result, a function of the points and the handle maps alone (the rotations are
   /// refined from the last call's, but to convergence, or decomposed afresh). The handle rows
   /// are set first; `iterate` keeps the buffers and rotations between calls.
-  void Straighten(
-    const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ParallelFor& loop) const;
+  void Straighten(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
+    const ParallelFor& loop, const PointTargets* points = nullptr) const;
 
   const SparseCholesky& GetFactor() const { return this->Factor; }
+  const PointConstraints& GetPoints() const { return this->Points; }
 
 private:
   // Build's steps: the patch (returns its vertices, with each mesh vertex's patch row or -1),
   // the edges' symmetric weights and rest vectors, the rotations a handle move changes, the
-  // unknowns (an error if a part of them touches no known value), and L_ff's upper triangle.
+  // unknowns (an error if a part of them touches no known value and no point), and L_ff's
+  // upper triangle.
   std::vector<int> GrowPatch(const SurfaceMesh& mesh, const EditRegion& region, std::vector<int>& patchRow);
   void WeighEdges(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
     const std::vector<int>& patchRow, LaplacianWeights type, const ParallelFor& loop);
   void FindRotationsAroundHandles();
   std::string ChooseUnknowns(const EditRegion& region);
   Eigen::SparseMatrix<double> AssembleFreeLaplacian(const ParallelFor& loop) const;
+  // The points' soft term of the energy, 2 w^2 |B x - t|^2 over the rest scale (0 for an exact
+  // fit or no points).
+  double PointEnergy(const Positions& roiPositions, const PointTargets* points) const;
   // Solve's steps: the extrapolated start (returns whether it extrapolated), the free rows of
   // ROI positions, and a candidate iterate's local step (the iterate with `free` in its free
   // rows, into the workspace's candidate; returns its energy).
-  bool Extrapolate(
-    const std::vector<AffineMap>& handleMaps, ArapIterate& iterate, const ArapOptions& options) const;
+  bool Extrapolate(const std::vector<AffineMap>& handleMaps, const PointTargets* points,
+    ArapIterate& iterate, const ArapOptions& options) const;
   Eigen::MatrixXd FreePositions(const Positions& roi) const;
   double Evaluate(const Eigen::MatrixXd& free, ArapIterate& iterate, const ParallelFor& loop) const;
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
@@ -160,10 +174,11 @@ private:
     const ParallelFor& loop, bool aroundHandles) const;
   // A global step with `rotations` from the iterate's patch, written to its free rows.
   void GlobalStep(const std::vector<Eigen::Matrix3d>& rotations, ArapIterate& iterate,
-    const ParallelFor& loop) const;
-  // The global step: new free positions for the rotations.
+    const ParallelFor& loop, const PointTargets* points) const;
+  // The global step: new free positions for the rotations (and the points' targets).
   Eigen::MatrixXd Global(const std::vector<Eigen::Matrix3d>& rotations,
-    const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop) const;
+    const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop,
+    const PointTargets* points) const;
 
   int NumberOfROIVertices = 0;
   // Patch vertices: ROI rows first, then the rest; their rest positions and the diagonal of
@@ -186,6 +201,7 @@ private:
   std::vector<int> HandleGroups;
   // The energy vertices whose ring holds a handle row: the rotations a handle move changes.
   std::vector<int> AroundHandles;
+  PointConstraints Points;
   SparseCholesky Factor;
 };
 }

@@ -1,5 +1,7 @@
 #include "DeformationSystem.h"
 
+#include <numeric>
+
 namespace LaplacianEditing
 {
 std::string DeformationSystem::Build(
@@ -18,7 +20,7 @@ std::string DeformationSystem::Build(
     this->BuildFirstOrder(mesh, region, laplacian, local);
   }
   this->WeighConstraints(region, options);
-  const std::string error = this->FactorNormalEquations(options);
+  const std::string error = this->FactorNormalEquations(options, local);
   if (!error.empty())
   {
     return error;
@@ -85,7 +87,8 @@ void DeformationSystem::WeighConstraints(const EditRegion& region, const Deforma
   }
 }
 
-std::string DeformationSystem::FactorNormalEquations(const DeformationOptions& options)
+std::string DeformationSystem::FactorNormalEquations(
+  const DeformationOptions& options, const std::vector<int>& local)
 {
   const int n = this->GetNumberOfUnknowns();
   Eigen::SparseMatrix<double> normalMatrix =
@@ -96,6 +99,22 @@ std::string DeformationSystem::FactorNormalEquations(const DeformationOptions& o
     normalMatrix.coeffRef(k, k) += this->SquaredWeights[k];
   }
   normalMatrix.makeCompressed();
+  this->Points = PointConstraints();
+  if (options.Points)
+  {
+    std::vector<int> unknowns(n);
+    std::iota(unknowns.begin(), unknowns.end(), 0);
+    std::string error = this->Points.Build(*options.Points, local);
+    if (error.empty())
+    {
+      this->Points.Weigh(options.PointWeight, normalMatrix);
+      error = this->Points.AddToMatrix(normalMatrix, unknowns, 1);
+    }
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
   this->RegionOperatorTransposed = this->RegionOperator.transpose();
   this->RestRightHandSide = this->RegionOperatorTransposed * (this->RestDelta - this->FixedPart);
   return this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
@@ -194,9 +213,16 @@ Positions DeformationSystem::ConstraintRightHandSide(const std::vector<AffineMap
   return term;
 }
 
-Positions DeformationSystem::Solve(const std::vector<AffineMap>& handleMaps) const
+Positions DeformationSystem::Solve(
+  const std::vector<AffineMap>& handleMaps, const Positions& pointTargets) const
 {
-  return this->Responses.Evaluate(HandleMapParameters(handleMaps, this->NumberOfHandleGroups));
+  Positions solution =
+    this->Responses.Evaluate(HandleMapParameters(handleMaps, this->NumberOfHandleGroups));
+  if (!this->Points.IsEmpty())
+  {
+    solution += this->Factor.Solve(this->Points.RightHandSide(pointTargets, this->GetNumberOfUnknowns()));
+  }
+  return solution;
 }
 
 AffineRows DeformationSystem::GetAffineRows(const std::vector<int>& rows) const
@@ -213,17 +239,19 @@ AffineRows DeformationSystem::GetAffineRows(const std::vector<int>& rows) const
   return affine;
 }
 
-Positions DeformationSystem::SolveDirect(const std::vector<AffineMap>& handleMaps) const
+Positions DeformationSystem::SolveDirect(
+  const std::vector<AffineMap>& handleMaps, const Positions& pointTargets) const
 {
-  return this->Factor.Solve(this->RestRightHandSide + this->ConstraintRightHandSide(handleMaps));
+  return this->Factor.Solve(this->RestRightHandSide + this->ConstraintRightHandSide(handleMaps) +
+    this->PointRightHandSide(pointTargets));
 }
 
 Positions DeformationSystem::SolveWithDifferentialCoordinates(
   const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps,
-  const ParallelFor& loop) const
+  const ParallelFor& loop, const Positions& pointTargets) const
 {
   const Positions residual = differentialCoordinates - this->FixedPart;
-  Positions rhs = this->ConstraintRightHandSide(handleMaps);
+  Positions rhs = this->ConstraintRightHandSide(handleMaps) + this->PointRightHandSide(pointTargets);
   const auto& transposed = this->RegionOperatorTransposed;
   loop(0, this->GetNumberOfUnknowns(), [&](int first, int last) {
     for (int k = first; k < last; ++k)
@@ -235,5 +263,11 @@ Positions DeformationSystem::SolveWithDifferentialCoordinates(
     }
   });
   return this->Factor.Solve(rhs, loop);
+}
+
+Positions DeformationSystem::PointRightHandSide(const Positions& pointTargets) const
+{
+  return this->Points.IsEmpty() ? Positions::Zero(this->GetNumberOfUnknowns(), 3)
+                                : this->Points.RightHandSide(pointTargets, this->GetNumberOfUnknowns());
 }
 }

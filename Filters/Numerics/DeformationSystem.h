@@ -16,12 +16,15 @@
 #include "AffineRows.h"
 #include "EditRegion.h"
 #include "LaplacianOperator.h"
+#include "PointConstraints.h"
 #include "SparseCholesky.h"
 #include "Types.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,6 +50,11 @@ struct DeformationOptions
   /// Processes to factor across (SolverBackend::Distributed, or a factor above the limit);
   /// none by default. Not owned.
   DistributedSolver* Distributed = nullptr;
+  /// Soft constraints on points of the surface (PointConstraints.h), with their weight relative
+  /// to the system's stiffness; PointsVersion changes whenever the points do. None by default.
+  std::shared_ptr<const std::vector<SurfacePoint>> Points;
+  std::uint64_t PointsVersion = 0;
+  double PointWeight = 100.0;
 
   bool operator==(const DeformationOptions& other) const
   {
@@ -55,7 +63,8 @@ struct DeformationOptions
       this->Backend == other.Backend && this->Ordering == other.Ordering &&
       this->MaximumFactorBytes == other.MaximumFactorBytes &&
       this->Distributed == other.Distributed &&
-      this->LeastSquares == other.LeastSquares;
+      this->LeastSquares == other.LeastSquares && (this->Points != nullptr) == (other.Points != nullptr) &&
+      this->PointsVersion == other.PointsVersion && this->PointWeight == other.PointWeight;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };
@@ -71,23 +80,28 @@ public:
   Eigen::MatrixXd HandleBasis(int group) const;
 
   /// Reconstructs the ROI from its rest differential coordinates, moving each handle group g
-  /// by handleMaps[g] (a missing map means identity). Rows follow region.Vertices. Uses the
-  /// precomputed responses: O(n) per handle group.
-  Positions Solve(const std::vector<AffineMap>& handleMaps) const;
+  /// by handleMaps[g] (a missing map means identity) and pulling the points to `pointTargets`
+  /// (a row per point, if there are points). Rows follow region.Vertices. Uses the precomputed
+  /// responses, O(n) per handle group, and one solve for the points' pull.
+  Positions Solve(const std::vector<AffineMap>& handleMaps, const Positions& pointTargets = Positions()) const;
 
   /// The same through the factor's triangular solves (the reference for Solve).
-  Positions SolveDirect(const std::vector<AffineMap>& handleMaps) const;
+  Positions SolveDirect(
+    const std::vector<AffineMap>& handleMaps, const Positions& pointTargets = Positions()) const;
 
   /// Solve's affine form on some rows (indices into region.Vertices).
   AffineRows GetAffineRows(const std::vector<int>& rows) const;
 
   /// The same with other differential coordinates, for example rotated ones.
   Positions SolveWithDifferentialCoordinates(const Positions& differentialCoordinates,
-    const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor) const;
+    const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor,
+    const Positions& pointTargets = Positions()) const;
 
   /// The constraints' share of A^T b: w_i^2 u_i, with u_i the transformed rest position of a
   /// handle vertex and the rest position of an anchor; zero for free vertices.
   Positions ConstraintRightHandSide(const std::vector<AffineMap>& handleMaps) const;
+  /// The points' share of A^T b, w^2 B^T t (zero without points).
+  Positions PointRightHandSide(const Positions& pointTargets) const;
 
   /// Second order: the first-order coordinates of the ROI, and L applied to first-order
   /// coordinates given for the ROI (those outside it stay at rest), which gives second-order
@@ -113,6 +127,8 @@ public:
   int GetNumberOfHandleGroups() const { return this->NumberOfHandleGroups; }
   int GetNumberOfUnknowns() const { return static_cast<int>(this->RestPositions.rows()); }
   const SparseCholesky& GetFactor() const { return this->Factor; }
+  /// The points' constraints, weighed for this system.
+  const PointConstraints& GetPoints() const { return this->Points; }
 
 private:
   // Build's steps: the operator's rows over the ROI (and the fixed part), the constraint
@@ -120,7 +136,7 @@ private:
   void AssembleOperator(const SurfaceMesh& mesh, const EditRegion& region,
     const LaplacianOperator& laplacian, const std::vector<int>& local, int order);
   void WeighConstraints(const EditRegion& region, const DeformationOptions& options);
-  std::string FactorNormalEquations(const DeformationOptions& options);
+  std::string FactorNormalEquations(const DeformationOptions& options, const std::vector<int>& local);
   void ComputeResponses(int groups);
   void BuildFirstOrder(const SurfaceMesh& mesh, const EditRegion& region,
     const LaplacianOperator& laplacian, const std::vector<int>& local);
@@ -138,6 +154,7 @@ private:
   Positions FixedPart;
   Eigen::VectorXd SquaredWeights;
   std::vector<int> HandleGroups;
+  PointConstraints Points;
   // L^T (delta - fixed part) for the rest differential coordinates: constant per region.
   Positions RestRightHandSide;
   // The solution with every handle map zero, and each group's n x 4 response (AffineRows.h).

@@ -251,4 +251,39 @@ std::string SelectLabeledRegion(const SurfaceMesh& mesh, std::vector<int> labels
   AssignRelativeDistances(mesh, fromHandles, method, region);
   return Finish(mesh, anchorPadding, region);
 }
+
+std::string SelectComponents(const SurfaceMesh& mesh, const std::vector<int>& seeds, EditRegion& region)
+{
+  const std::vector<int>& components = mesh.GetComponents();
+  std::vector<char> chosen(mesh.GetNumberOfComponents(), 0);
+  for (const int seed : seeds)
+  {
+    if (seed < 0 || seed >= mesh.GetNumberOfVertices() || components[seed] < 0)
+    {
+      return "a seed is not a vertex of the surface's triangles";
+    }
+    chosen[components[seed]] = 1;
+  }
+  region = EditRegion();
+  Eigen::AlignedBox3d box;
+  for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+  {
+    if (components[v] >= 0 && chosen[components[v]])
+    {
+      region.Vertices.push_back(v);
+      box.extend(mesh.GetPositions()[v]);
+    }
+  }
+  if (region.Vertices.empty())
+  {
+    return "no seed";
+  }
+  const std::size_t n = region.Vertices.size();
+  region.Roles.assign(n, VertexRole::Free);
+  region.HandleGroups.assign(n, -1);
+  region.RelativeDistances.assign(n, 0.0);
+  region.Radius = box.diagonal().norm();
+  region.BordersFixedPart = false;
+  return {};
+}
 }

@@ -58,6 +58,11 @@ std::string SelectGeodesicRegion(const SurfaceMesh& mesh, int centerVertex, doub
 std::string SelectLabeledRegion(const SurfaceMesh& mesh, std::vector<int> labels,
   double anchorPadding, EditRegion& region, DistanceMethod method = DistanceMethod::FastMarching,
   double roiRadius = 0.0);
+
+/// Every vertex of the connected components that hold a seed vertex, all free: the region of a
+/// landmark warp, which its point constraints alone hold (PointConstraints.h). Radius is the
+/// diagonal of the region's bounding box. Returns an error message, empty on success.
+std::string SelectComponents(const SurfaceMesh& mesh, const std::vector<int>& seeds, EditRegion& region);
 }
 
 #endif

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -401,6 +402,18 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
     normalMatrix = normal.UpperTriangle(plain.GetSquaredWeights());
     this->KnownRightHandSide = normal.GetRightHandSide();
   }
+  this->Points = plain.GetPoints();
+  if (!this->Points.IsEmpty())
+  {
+    std::vector<int> unknowns(this->NumberOfVertices);
+    std::iota(unknowns.begin(), unknowns.end(), 0);
+    this->Points.Weigh(options.PointWeight, normalMatrix);
+    const std::string error = this->Points.AddToMatrix(normalMatrix, unknowns, 3);
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
   const std::string error = this->Factor.Factorize(normalMatrix, options.Backend, options.Ordering,
     options.MaximumFactorBytes, /*blockSize=*/3, options.Distributed);
   if (!error.empty())
@@ -444,7 +457,7 @@ void ImplicitSimilaritySystem::ComputeResponses(const DeformationSystem& plain)
 }
 
 Positions ImplicitSimilaritySystem::Solve(
-  const std::vector<AffineMap>& handleMaps, const ParallelFor& loop) const
+  const std::vector<AffineMap>& handleMaps, const ParallelFor& loop, const Positions& pointTargets) const
 {
   // Row blocks in parallel: the responses are 3n x 12 per group, too large to stay in cache,
   // so a move is bound by reading them.
@@ -461,7 +474,18 @@ Positions ImplicitSimilaritySystem::Solve(
     }
     positions.middleRows(first, last - first) = Deinterleave(solution);
   });
+  if (!this->Points.IsEmpty())
+  {
+    positions += this->SolvePoints(pointTargets, loop);
+  }
   return positions;
+}
+
+Positions ImplicitSimilaritySystem::SolvePoints(const Positions& pointTargets, const ParallelFor& loop) const
+{
+  const Eigen::VectorXd rhs =
+    Interleave(this->Points.RightHandSide(pointTargets, this->NumberOfVertices));
+  return Deinterleave(this->Factor.Solve(rhs, loop));
 }
 
 AffineRows ImplicitSimilaritySystem::GetAffineRows(const std::vector<int>& rows) const
@@ -482,11 +506,15 @@ AffineRows ImplicitSimilaritySystem::GetAffineRows(const std::vector<int>& rows)
   return affine;
 }
 
-Positions ImplicitSimilaritySystem::SolveDirect(
-  const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const
+Positions ImplicitSimilaritySystem::SolveDirect(const DeformationSystem& plain,
+  const std::vector<AffineMap>& handleMaps, const Positions& pointTargets) const
 {
-  const Eigen::VectorXd rhs =
-    this->KnownRightHandSide + Interleave(plain.ConstraintRightHandSide(handleMaps));
+  Positions known = plain.ConstraintRightHandSide(handleMaps);
+  if (!this->Points.IsEmpty())
+  {
+    known += this->Points.RightHandSide(pointTargets, this->NumberOfVertices);
+  }
+  const Eigen::VectorXd rhs = this->KnownRightHandSide + Interleave(known);
   return Deinterleave(this->Factor.Solve(rhs));
 }
 }

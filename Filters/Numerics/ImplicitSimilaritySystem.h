@@ -44,12 +44,14 @@ public:
     const ImplicitFormulation& formulation = ImplicitFormulation(),
     const ParallelFor& loop = SerialFor);
 
-  /// The ROI positions minimizing the energy for the given handle maps (precomputed responses).
-  Positions Solve(
-    const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor) const;
+  /// The ROI positions minimizing the energy for the given handle maps (precomputed responses)
+  /// and, if `plain` has points, their targets (one solve).
+  Positions Solve(const std::vector<AffineMap>& handleMaps, const ParallelFor& loop = SerialFor,
+    const Positions& pointTargets = Positions()) const;
 
   /// The same through the factor's triangular solves (the reference for Solve).
-  Positions SolveDirect(const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps) const;
+  Positions SolveDirect(const DeformationSystem& plain, const std::vector<AffineMap>& handleMaps,
+    const Positions& pointTargets = Positions()) const;
 
   /// Solve's affine form on some rows (indices into the region's vertices).
   AffineRows GetAffineRows(const std::vector<int>& rows) const;
@@ -59,9 +61,13 @@ public:
 private:
   // The rest solution and the handle groups' responses, from the factor.
   void ComputeResponses(const DeformationSystem& plain);
+  // The points' pull, w^2 B^T t, solved.
+  Positions SolvePoints(const Positions& pointTargets, const ParallelFor& loop) const;
 
   int NumberOfVertices = 0;
   SparseCholesky Factor;
+  // The region's points, weighed for this system.
+  PointConstraints Points;
   // A^T b of the known parts (fixed vertices): constant per region.
   Eigen::VectorXd KnownRightHandSide;
   // The solution with every handle map zero, and each group's 3n x 12 response to the entries

@@ -15,6 +15,10 @@ bool RegionRequest::operator==(const RegionRequest& other) const
   {
     return this->LabelsVersion == other.LabelsVersion && this->GrowRadius == other.GrowRadius;
   }
+  if (this->Selection == Kind::Components)
+  {
+    return this->Seeds == other.Seeds;
+  }
   return this->CenterVertex == other.CenterVertex && this->HandleRadius == other.HandleRadius &&
     this->ROIRadius == other.ROIRadius;
 }
@@ -62,6 +66,10 @@ void LaplacianEditor::Record(const SparseCholesky& factor)
 std::string LaplacianEditor::SelectRegion(
   const RegionRequest& request, const std::function<std::vector<int>()>& labels)
 {
+  if (request.Selection == RegionRequest::Kind::Components)
+  {
+    return SelectComponents(*this->Mesh, request.Seeds, this->Region);
+  }
   if (request.Selection == RegionRequest::Kind::Labeled)
   {
     return SelectLabeledRegion(*this->Mesh, labels(), request.AnchorPadding, this->Region,
@@ -122,6 +130,7 @@ EditStatus LaplacianEditor::UpdateRegion(const RegionRequest& region,
     this->Implicit.reset();
     this->Arap.reset();
     this->System = DeformationSystem();
+    this->PointCorrection = Positions();
     this->NumberOfFactorizationAttempts += system.LeastSquares ? 1 : 0;
     const std::string error =
       system.LeastSquares ? this->System.Build(*this->Mesh, this->Region, system) : std::string();
@@ -254,8 +263,26 @@ std::string LaplacianEditor::BuildArap()
 bool LaplacianEditor::IsAffineInHandleMaps() const
 {
   const RotationMode mode = this->Rotation.Mode;
-  return this->Ready &&
+  return this->Ready && !this->SystemBuiltFrom.Points &&
     (mode == RotationMode::None || (mode == RotationMode::Implicit && !this->Rotation.PreserveDetailScale));
+}
+
+const PointConstraints& LaplacianEditor::GetPoints() const
+{
+  return this->SystemBuiltFrom.LeastSquares ? this->System.GetPoints() : this->Arap->GetPoints();
+}
+
+Positions LaplacianEditor::FitPoints(
+  const std::function<Positions(const Positions&)>& solve, const PointTargets* points)
+{
+  if (!points || this->GetPoints().IsEmpty())
+  {
+    return solve(Positions());
+  }
+  Positions solution;
+  double miss = 0.0;
+  this->GetPoints().Fit(solve, *points, this->PointCorrection, solution, miss);
+  return solution;
 }
 
 AffineRows LaplacianEditor::GetAffineRows(const std::vector<int>& rows) const
@@ -264,12 +291,19 @@ AffineRows LaplacianEditor::GetAffineRows(const std::vector<int>& rows) const
                                                         : this->System.GetAffineRows(rows);
 }
 
-EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions)
+EditStatus LaplacianEditor::Solve(
+  const std::vector<AffineMap>& handleMaps, Positions& roiPositions, const PointTargets* points)
 {
   EditStatus status;
   if (!this->Ready)
   {
     status.Error = "the editor has no region: Update first";
+    return status;
+  }
+  if (!this->GetPoints().IsEmpty() &&
+    (!points || points->Targets.rows() != this->GetPoints().GetNumberOfPoints()))
+  {
+    status.Error = "the system has point constraints: give a target for each point";
     return status;
   }
   const RotationOptions& rotation = this->Rotation;
@@ -278,24 +312,30 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
     // A drag continues from the last result; a new region starts from the rest edges.
     if (this->ArapWarmStart.Points.rows() != this->Region.GetNumberOfVertices())
     {
-      this->ArapWarmStart = this->Arap->InitialGuess(handleMaps);
+      this->ArapWarmStart = this->Arap->InitialGuess(handleMaps, points);
     }
-    this->LastArap = this->Arap->Solve(handleMaps, this->ArapWarmStart, rotation.Arap, this->Loop);
+    this->LastArap = this->Arap->Solve(
+      handleMaps, this->ArapWarmStart, rotation.Arap, this->Loop, nullptr, points);
     roiPositions = this->ArapWarmStart.Points;
+  }
+  else if (rotation.Mode == RotationMode::Implicit && rotation.PreserveDetailScale)
+  {
+    // The rigid step's global step meets the points itself.
+    roiPositions = this->Implicit->Solve(handleMaps, this->Loop, points ? points->Targets : Positions());
+    this->Straightened.Points.swap(roiPositions);
+    this->Arap->Straighten(handleMaps, this->Straightened, this->Loop, points);
+    roiPositions = this->Straightened.Points;
   }
   else if (rotation.Mode == RotationMode::Implicit)
   {
-    roiPositions = this->Implicit->Solve(handleMaps, this->Loop);
-    if (rotation.PreserveDetailScale)
-    {
-      this->Straightened.Points.swap(roiPositions);
-      this->Arap->Straighten(handleMaps, this->Straightened, this->Loop);
-      roiPositions = this->Straightened.Points;
-    }
+    roiPositions = this->FitPoints(
+      [&](const Positions& targets) { return this->Implicit->Solve(handleMaps, this->Loop, targets); },
+      points);
   }
   else
   {
-    roiPositions = this->System.Solve(handleMaps);
+    roiPositions = this->FitPoints(
+      [&](const Positions& targets) { return this->System.Solve(handleMaps, targets); }, points);
     for (int pass = 0; rotation.Mode == RotationMode::Explicit &&
          pass < std::max(rotation.Iterations, 1);
          ++pass)
@@ -306,9 +346,14 @@ EditStatus LaplacianEditor::Solve(const std::vector<AffineMap>& handleMaps, Posi
       {
         rotated = this->System.ComposeSecondOrder(rotated);
       }
-      roiPositions = this->System.SolveWithDifferentialCoordinates(rotated, handleMaps, this->Loop);
+      roiPositions = this->FitPoints(
+        [&](const Positions& targets) {
+          return this->System.SolveWithDifferentialCoordinates(rotated, handleMaps, this->Loop, targets);
+        },
+        points);
     }
   }
+  this->LargestPointMiss = points ? this->GetPoints().LargestMiss(roiPositions, points->Targets) : 0.0;
   if (!roiPositions.allFinite())
   {
     status.Error = "the solve produced non-finite coordinates; the handle transform may be "

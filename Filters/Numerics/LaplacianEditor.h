@@ -36,8 +36,9 @@ struct RegionRequest
 {
   enum class Kind
   {
-    Geodesic, // discs around CenterVertex
-    Labeled   // per-vertex labels (0 fixed, 1 ROI, 2 + g handle group g)
+    Geodesic,  // discs around CenterVertex
+    Labeled,   // per-vertex labels (0 fixed, 1 ROI, 2 + g handle group g)
+    Components // the connected components holding Seeds, all free (a landmark warp's)
   };
   Kind Selection = Kind::Geodesic;
   int CenterVertex = -1;
@@ -48,6 +49,8 @@ struct RegionRequest
   std::uint64_t LabelsVersion = 0;
   /// Labeled: vertices within it of the handles join the ROI (0: the labels alone).
   double GrowRadius = 0.0;
+  /// Components: vertices whose components make the region.
+  std::vector<int> Seeds;
   /// How distances are measured (region, anchors, normal smoothing).
   DistanceMethod Distances = DistanceMethod::FastMarching;
 
@@ -115,12 +118,18 @@ public:
   /// (the implicit mode factors its coupled system). A failure is remembered as above.
   EditStatus UpdateRotationModel(const RotationOptions& rotation);
 
-  /// The ROI positions for the handle maps (rows follow GetRegion().Vertices). Needs a
-  /// successful Update with the same rotation options.
-  EditStatus Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions);
+  /// The ROI positions for the handle maps (rows follow GetRegion().Vertices) and, where the
+  /// system has points (DeformationOptions::Points), their targets, which are required then.
+  /// Needs a successful Update with the same rotation options.
+  EditStatus Solve(const std::vector<AffineMap>& handleMaps, Positions& roiPositions,
+    const PointTargets* points = nullptr);
+
+  /// The largest distance of a point from its target after the last solve (0 without points).
+  double GetLargestPointMiss() const { return this->LargestPointMiss; }
 
   /// Whether Solve is affine in the handle maps (None, and Implicit without the rigid
-  /// correction), and then its affine form on some rows (indices into GetRegion().Vertices).
+  /// correction, without points), and then its affine form on some rows (indices into
+  /// GetRegion().Vertices).
   bool IsAffineInHandleMaps() const;
   AffineRows GetAffineRows(const std::vector<int>& rows) const;
 
@@ -150,6 +159,10 @@ private:
     const std::function<std::vector<int>()>& labels);
   std::string BuildRotationModel(const RotationOptions& rotation, bool& built);
   std::string BuildArap();
+  // The linear modes' solve (`solve` for some point targets), fitted to `points`.
+  Positions FitPoints(
+    const std::function<Positions(const Positions&)>& solve, const PointTargets* points);
+  const PointConstraints& GetPoints() const;
   EditStatus Fail(bool rotationModel, RotationMode mode, std::string error);
   void Record(const SparseCholesky& factor);
 
@@ -175,6 +188,9 @@ private:
   ArapResult LastArap;
   // Implicit mode's rigid correction: its buffers, kept between moves.
   ArapIterate Straightened;
+  // The linear modes' exact fit: the point targets' correction, carried from solve to solve.
+  Positions PointCorrection;
+  double LargestPointMiss = 0.0;
   // Implicit mode, and the formulation it was built with.
   std::unique_ptr<ImplicitSimilaritySystem> Implicit;
   ImplicitFormulation ImplicitBuiltWith;

@@ -19,32 +19,6 @@ using namespace LaplacianEditing::Testing;
 
 namespace
 {
-// A closed-ended tube along z: `rings` circles of `sides` vertices, radius 0.2, length 1.
-SurfaceMesh MakeTube(int sides, int rings)
-{
-  std::vector<Vector3> points;
-  const double pi = std::acos(-1.0);
-  for (int r = 0; r < rings; ++r)
-  {
-    for (int s = 0; s < sides; ++s)
-    {
-      const double angle = 2.0 * pi * s / sides;
-      points.emplace_back(0.2 * std::cos(angle), 0.2 * std::sin(angle), static_cast<double>(r) / (rings - 1));
-    }
-  }
-  std::vector<std::int64_t> offsets(1, 0), connectivity;
-  for (int r = 0; r + 1 < rings; ++r)
-  {
-    for (int s = 0; s < sides; ++s)
-    {
-      const std::int64_t a = r * sides + s, b = r * sides + (s + 1) % sides;
-      connectivity.insert(connectivity.end(), { a, b, b + sides, a + sides });
-      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    }
-  }
-  return SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
-}
-
 // The tube's lowest rings fixed, its top rings the handle, the rest the ROI.
 struct TubeEdit
 {

@@ -1,0 +1,126 @@
+#include "PointConstraints.h"
+
+#include <algorithm>
+
+namespace LaplacianEditing
+{
+std::string PointConstraints::Build(
+  const std::vector<SurfacePoint>& points, const std::vector<int>& rowOfVertex)
+{
+  this->Rows.resize(points.size());
+  this->Weights.resize(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const int vertex = points[p].Vertices[c];
+      const int row =
+        vertex >= 0 && vertex < static_cast<int>(rowOfVertex.size()) ? rowOfVertex[vertex] : -1;
+      if (row < 0 && points[p].Weights[c] != 0.0)
+      {
+        return "point " + std::to_string(p) + " lies outside the region";
+      }
+      this->Rows[p][c] = std::max(row, 0);
+      this->Weights[p][c] = points[p].Weights[c];
+    }
+  }
+  return {};
+}
+
+void PointConstraints::Weigh(double weight, const Eigen::SparseMatrix<double>& upper)
+{
+  const double meanDiagonal = upper.rows() > 0 ? upper.diagonal().mean() : 1.0;
+  this->SquaredWeight = weight * weight * meanDiagonal;
+}
+
+Positions PointConstraints::Evaluate(const Positions& region) const
+{
+  Positions points(this->GetNumberOfPoints(), 3);
+  for (int p = 0; p < this->GetNumberOfPoints(); ++p)
+  {
+    points.row(p) = this->Weights[p][0] * region.row(this->Rows[p][0]) +
+      this->Weights[p][1] * region.row(this->Rows[p][1]) +
+      this->Weights[p][2] * region.row(this->Rows[p][2]);
+  }
+  return points;
+}
+
+std::string PointConstraints::AddToMatrix(
+  Eigen::SparseMatrix<double>& upper, const std::vector<int>& unknownOfRow, int blockSize) const
+{
+  for (int p = 0; p < this->GetNumberOfPoints(); ++p)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int b = 0; b < 3; ++b)
+      {
+        const double value = this->SquaredWeight * this->Weights[p][a] * this->Weights[p][b];
+        if (value == 0.0)
+        {
+          continue;
+        }
+        const int ua = unknownOfRow[this->Rows[p][a]], ub = unknownOfRow[this->Rows[p][b]];
+        if (ua < 0 || ub < 0)
+        {
+          return "point " + std::to_string(p) + " lies on a vertex whose position is given";
+        }
+        for (int c = 0; c < blockSize && ua <= ub; ++c)
+        {
+          // Entries between a triangle's corners exist already but for a polygon's diagonal.
+          upper.coeffRef(ua * blockSize + c, ub * blockSize + c) += value;
+        }
+      }
+    }
+  }
+  upper.makeCompressed();
+  return {};
+}
+
+Positions PointConstraints::RightHandSide(const Positions& targets, int rows) const
+{
+  Positions rhs = Positions::Zero(rows, 3);
+  for (int p = 0; p < this->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rhs.row(this->Rows[p][c]) += (this->SquaredWeight * this->Weights[p][c]) * targets.row(p);
+    }
+  }
+  return rhs;
+}
+
+double PointConstraints::LargestMiss(const Positions& region, const Positions& targets) const
+{
+  return this->IsEmpty() ? 0.0 : (this->Evaluate(region) - targets).rowwise().norm().maxCoeff();
+}
+
+int PointConstraints::Fit(const std::function<Positions(const Positions&)>& solve,
+  const PointTargets& targets, Positions& correction, Positions& solution, double& miss) const
+{
+  // Each round moves the targets the solve sees by what the points still miss.
+  const Positions& wanted = targets.Targets;
+  if (!targets.Exact || correction.rows() != wanted.rows())
+  {
+    correction = Positions::Zero(wanted.rows(), 3);
+  }
+  Positions effective = wanted + correction;
+  int rounds = 0;
+  for (;;)
+  {
+    solution = solve(effective);
+    ++rounds;
+    const Positions residual = wanted - this->Evaluate(solution);
+    miss = this->IsEmpty() ? 0.0 : residual.rowwise().norm().maxCoeff();
+    if (!targets.Exact || !(miss > targets.Tolerance) || rounds >= targets.MaximumRounds)
+    {
+      break;
+    }
+    effective += residual;
+  }
+  if (targets.Exact)
+  {
+    correction = effective - wanted;
+  }
+  return rounds;
+}
+}
