@@ -13,6 +13,7 @@ add_subdirectory("${_le_root}/Filters/Numerics" "${CMAKE_CURRENT_BINARY_DIR}/Num
 set(classes
   Filters/vtkBumpyPlaneSource
   Filters/vtkLaplacianDeformationFilter
+  Filters/vtkLaplacianLandmarkWarp
   Filters/Parallel/vtkPLaplacianDeformationFilter
   Widgets/vtkDeformationHandleRepresentation
   Widgets/vtkDeformationHandleWidget)
@@ -22,6 +23,7 @@ set(private_classes
   Filters/Stages/vtkLaplacianDragPreview
   Filters/Stages/vtkLaplacianEditSolver
   Filters/Stages/vtkLaplacianHandleMaps
+  Filters/Stages/vtkLaplacianLandmarkBinder
   Filters/Stages/vtkLaplacianNormalRefresher
   Filters/Stages/vtkLaplacianOutputArray
   Filters/Stages/vtkLaplacianOutputWriter

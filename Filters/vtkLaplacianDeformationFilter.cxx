@@ -475,17 +475,8 @@ bool vtkLaplacianDeformationFilter::Solve(const double translation[3], const dou
 vtkLaplacianOutputEdit vtkLaplacianDeformationFilter::SolvedEdit() const
 {
   const vtkInternals& internals = *this->Internals;
-  const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
-  vtkLaplacianOutputEdit edit;
-  edit.Moved = &surface.GetRegionPoints();
-  edit.Solution = &internals.Solver.GetSolution();
-  edit.Center = surface.GetCenter();
-  edit.Scale = surface.GetScale();
-  edit.Normals = &internals.Normals;
-  edit.VertexRest = &surface.GetMesh()->GetPositions();
-  edit.VertexRows = &surface.GetRowOfVertex();
-  edit.RegionVersion = internals.Solver.GetModelVersion();
-  return edit;
+  return internals.Surface.GetEdit(
+    internals.Solver.GetSolution(), &internals.Normals, internals.Solver.GetModelVersion());
 }
 
 void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)

@@ -101,8 +101,10 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
     return error;
   }
   Eigen::SparseMatrix<double> matrix = this->AssembleFreeLaplacian(loop);
+  this->Bending.Build(options.Bending, this->Rings(), this->UnknownOfPatch, matrix);
   if (!this->Points.IsEmpty())
   {
+    this->RestPoints = this->Points.Evaluate(this->RestPatch.topRows(this->NumberOfROIVertices));
     this->Points.Weigh(options.PointWeight, matrix);
     error = this->Points.AddToMatrix(matrix, this->UnknownOfPatch, 1);
     if (!error.empty())
@@ -415,7 +417,22 @@ Eigen::Matrix3d AsRigidAsPossibleSolver::Deformation(const std::vector<Vector3>&
     deformation.noalias() +=
       this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
   }
+  if (!this->Bending.IsEmpty())
+  {
+    deformation.noalias() += (2.0 * this->Bending.GetCoefficient(i)) * this->DeformedEdgeSum(patch, i) *
+      this->RestEdgeSums[i].transpose();
+  }
   return deformation;
+}
+
+Vector3 AsRigidAsPossibleSolver::DeformedEdgeSum(const std::vector<Vector3>& patch, int i) const
+{
+  Vector3 sum = Vector3::Zero();
+  for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+  {
+    sum += this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]);
+  }
+  return sum;
 }
 
 double AsRigidAsPossibleSolver::Residual(
@@ -427,6 +444,11 @@ double AsRigidAsPossibleSolver::Residual(
     residual += this->Weights[k] *
       (patch[i] - patch[this->Neighbors[k]] - rotation * this->RestEdges[k]).squaredNorm();
   }
+  if (!this->Bending.IsEmpty())
+  {
+    residual += 2.0 * this->Bending.GetCoefficient(i) *
+      (this->DeformedEdgeSum(patch, i) - rotation * this->RestEdgeSums[i]).squaredNorm();
+  }
   return residual;
 }
 
@@ -434,53 +456,67 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
   const std::vector<Vector3>& patch, ArapIterate::Workspace& work, const ParallelFor& loop,
   const PointTargets* points) const
 {
+  // Solved for the displacement from the rest shape, whose right-hand side vanishes where the
+  // rotations are the identity and the known rows at rest: the rest comes back to rounding of
+  // the edges' size, not of the coordinates'.
   const int free = static_cast<int>(this->FreeRows.size());
   auto& rhs = work.RightHandSide;
   rhs.resize(free, 3);
   loop(0, free, [&](int first, int last) {
     for (int u = first; u < last; ++u)
     {
-      // sum_j w_ij (R_i + R_j) e_ij / 2, with R_i's part from the ring's rest sum.
+      // sum_j w_ij ((R_i + R_j) / 2 - I) e_ij, with R_i's part from the ring's rest sum.
       const int i = this->FreeRows[u];
-      Vector3 b = rotations[i] * this->RestEdgeSums[i];
+      const Vector3& sum = this->RestEdgeSums[i];
+      Vector3 b = rotations[i] * sum - sum;
+      Vector3 turned = Vector3::Zero();
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
         const int j = this->Neighbors[k];
-        b.noalias() += this->Weights[k] * (rotations[j] * this->RestEdges[k]);
+        turned.noalias() += this->Weights[k] * (rotations[j] * this->RestEdges[k]);
         if (this->UnknownOfPatch[j] < 0)
         {
-          b += (2.0 * this->Weights[k]) * patch[j];
+          b += (2.0 * this->Weights[k]) * (patch[j] - this->RestPatch.row(j).transpose());
         }
       }
-      rhs.row(u) = 0.5 * b.transpose();
+      rhs.row(u) = 0.5 * (b + (turned - sum)).transpose();
     }
   });
-  if (this->Points.IsEmpty())
+  if (!this->Bending.IsEmpty())
   {
-    return this->Factor.Solve(rhs, loop);
+    this->Bending.AddToRightHandSide(
+      this->Rings(), this->UnknownOfPatch, rotations, patch, this->RestPatch, rhs);
   }
-  // The points' pull on the free rows, met exactly or softly (PointConstraints::Fit).
   Positions roi(this->NumberOfROIVertices, 3);
   for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {
     roi.row(k) = patch[k].transpose();
   }
+  // The points' pull on the free rows, met exactly or softly (PointConstraints::Fit).
   auto solve = [&](const Positions& targets) {
-    const Positions pull = this->Points.RightHandSide(targets, this->NumberOfROIVertices);
     Eigen::MatrixXd withPull = rhs;
-    for (int u = 0; u < free; ++u)
+    if (!this->Points.IsEmpty())
     {
-      withPull.row(u) += pull.row(this->FreeRows[u]);
+      const Positions pull =
+        this->Points.RightHandSide(targets - this->RestPoints, this->NumberOfROIVertices);
+      for (int u = 0; u < free; ++u)
+      {
+        withPull.row(u) += pull.row(this->FreeRows[u]);
+      }
     }
-    const Eigen::MatrixXd solution = this->Factor.Solve(withPull, loop);
+    const Eigen::MatrixXd displacement = this->Factor.Solve(withPull, loop);
     for (int u = 0; u < free; ++u)
     {
-      roi.row(this->FreeRows[u]) = solution.row(u);
+      roi.row(this->FreeRows[u]) = this->RestPatch.row(this->FreeRows[u]) + displacement.row(u);
     }
     return roi;
   };
+  if (this->Points.IsEmpty())
+  {
+    return this->FreePositions(solve(Positions()));
+  }
   // Without targets, the points stay where the rest shape has them.
-  const PointTargets atRest{ this->Points.Evaluate(this->RestPatch.topRows(this->NumberOfROIVertices)), false };
+  const PointTargets atRest{ this->RestPoints, false };
   Positions solution;
   double miss = 0.0;
   this->Points.Fit(solve, points ? *points : atRest, work.PointCorrection, solution, miss);

@@ -17,6 +17,7 @@
 #ifndef LaplacianEditing_AsRigidAsPossibleSolver_h
 #define LaplacianEditing_AsRigidAsPossibleSolver_h
 
+#include "ArapBending.h"
 #include "DeformationSystem.h"
 #include "ParallelFor.h"
 
@@ -155,6 +156,8 @@ private:
     ArapIterate& iterate, const ArapOptions& options) const;
   Eigen::MatrixXd FreePositions(const Positions& roi) const;
   double Evaluate(const Eigen::MatrixXd& free, ArapIterate& iterate, const ParallelFor& loop) const;
+  // The rings in the form ArapBending takes them.
+  ArapRings Rings() const { return { this->Offsets, this->Neighbors, this->Weights, this->RestEdgeSums }; }
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
   void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
@@ -166,6 +169,8 @@ private:
   // Vertex i's ring: its deformation (the weighted covariance of its edges, rest against
   // `patch`), and its residual under `rotation`.
   Eigen::Matrix3d Deformation(const std::vector<Vector3>& patch, int i) const;
+  // The weighted sum of vertex i's deformed edges (the bending term's s'_i).
+  Vector3 DeformedEdgeSum(const std::vector<Vector3>& patch, int i) const;
   double Residual(const std::vector<Vector3>& patch, int i, const Eigen::Matrix3d& rotation) const;
   // Sets the handle rows to their targets, then the local step at the iterate's points (only
   // around the handles if `aroundHandles`, the other rotations fitting already). Returns the
@@ -202,6 +207,8 @@ private:
   // The energy vertices whose ring holds a handle row: the rotations a handle move changes.
   std::vector<int> AroundHandles;
   PointConstraints Points;
+  Positions RestPoints; // the points on the rest shape
+  ArapBending Bending;
   SparseCholesky Factor;
 };
 }

@@ -107,6 +107,7 @@ std::string DeformationSystem::FactorNormalEquations(
     std::string error = this->Points.Build(*options.Points, local);
     if (error.empty())
     {
+      this->RestPoints = this->Points.Evaluate(this->RestPositions);
       this->Points.Weigh(options.PointWeight, normalMatrix);
       error = this->Points.AddToMatrix(normalMatrix, unknowns, 1);
     }
@@ -216,13 +217,15 @@ Positions DeformationSystem::ConstraintRightHandSide(const std::vector<AffineMap
 Positions DeformationSystem::Solve(
   const std::vector<AffineMap>& handleMaps, const Positions& pointTargets) const
 {
-  Positions solution =
-    this->Responses.Evaluate(HandleMapParameters(handleMaps, this->NumberOfHandleGroups));
-  if (!this->Points.IsEmpty())
+  const Eigen::VectorXd maps = HandleMapParameters(handleMaps, this->NumberOfHandleGroups);
+  if (this->Points.IsEmpty())
   {
-    solution += this->Factor.Solve(this->Points.RightHandSide(pointTargets, this->GetNumberOfUnknowns()));
+    return this->Responses.Evaluate(maps);
   }
-  return solution;
+  // With points, as a displacement from the rest shape (see PointPull).
+  const Eigen::VectorXd identities = HandleMapParameters({}, this->NumberOfHandleGroups);
+  return this->RestPositions + (this->Responses.Evaluate(maps) - this->Responses.Evaluate(identities)) +
+    Positions(this->Factor.Solve(this->PointPull(pointTargets)));
 }
 
 AffineRows DeformationSystem::GetAffineRows(const std::vector<int>& rows) const
@@ -242,16 +245,29 @@ AffineRows DeformationSystem::GetAffineRows(const std::vector<int>& rows) const
 Positions DeformationSystem::SolveDirect(
   const std::vector<AffineMap>& handleMaps, const Positions& pointTargets) const
 {
-  return this->Factor.Solve(this->RestRightHandSide + this->ConstraintRightHandSide(handleMaps) +
-    this->PointRightHandSide(pointTargets));
+  if (this->Points.IsEmpty())
+  {
+    return this->Factor.Solve(this->RestRightHandSide + this->ConstraintRightHandSide(handleMaps));
+  }
+  return this->RestPositions +
+    Positions(this->Factor.Solve(this->ConstraintRightHandSide(handleMaps) -
+      this->ConstraintRightHandSide({}) + this->PointPull(pointTargets)));
 }
 
 Positions DeformationSystem::SolveWithDifferentialCoordinates(
   const Positions& differentialCoordinates, const std::vector<AffineMap>& handleMaps,
   const ParallelFor& loop, const Positions& pointTargets) const
 {
-  const Positions residual = differentialCoordinates - this->FixedPart;
-  Positions rhs = this->ConstraintRightHandSide(handleMaps) + this->PointRightHandSide(pointTargets);
+  // With points, as a displacement from the rest shape (see PointPull): the rest coordinates'
+  // share and the handles' at rest leave the right-hand side.
+  const bool displaced = !this->Points.IsEmpty();
+  const Positions residual =
+    differentialCoordinates - (displaced ? this->RestDelta : this->FixedPart);
+  Positions rhs = this->ConstraintRightHandSide(handleMaps);
+  if (displaced)
+  {
+    rhs += this->PointPull(pointTargets) - this->ConstraintRightHandSide({});
+  }
   const auto& transposed = this->RegionOperatorTransposed;
   loop(0, this->GetNumberOfUnknowns(), [&](int first, int last) {
     for (int k = first; k < last; ++k)
@@ -262,12 +278,12 @@ Positions DeformationSystem::SolveWithDifferentialCoordinates(
       }
     }
   });
-  return this->Factor.Solve(rhs, loop);
+  const Positions solution = this->Factor.Solve(rhs, loop);
+  return displaced ? Positions(this->RestPositions + solution) : solution;
 }
 
-Positions DeformationSystem::PointRightHandSide(const Positions& pointTargets) const
+Positions DeformationSystem::PointPull(const Positions& pointTargets) const
 {
-  return this->Points.IsEmpty() ? Positions::Zero(this->GetNumberOfUnknowns(), 3)
-                                : this->Points.RightHandSide(pointTargets, this->GetNumberOfUnknowns());
+  return this->Points.RightHandSide(pointTargets - this->RestPoints, this->GetNumberOfUnknowns());
 }
 }

@@ -55,6 +55,9 @@ struct DeformationOptions
   std::shared_ptr<const std::vector<SurfacePoint>> Points;
   std::uint64_t PointsVersion = 0;
   double PointWeight = 100.0;
+  /// As-rigid-as-possible mode: the weight of its bending term (ArapBending.h), which a region
+  /// held by sparse points needs; 0, the default, leaves it out.
+  double Bending = 0.0;
 
   bool operator==(const DeformationOptions& other) const
   {
@@ -64,7 +67,8 @@ struct DeformationOptions
       this->MaximumFactorBytes == other.MaximumFactorBytes &&
       this->Distributed == other.Distributed &&
       this->LeastSquares == other.LeastSquares && (this->Points != nullptr) == (other.Points != nullptr) &&
-      this->PointsVersion == other.PointsVersion && this->PointWeight == other.PointWeight;
+      this->PointsVersion == other.PointsVersion && this->PointWeight == other.PointWeight &&
+      this->Bending == other.Bending;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };
@@ -100,8 +104,13 @@ public:
   /// The constraints' share of A^T b: w_i^2 u_i, with u_i the transformed rest position of a
   /// handle vertex and the rest position of an anchor; zero for free vertices.
   Positions ConstraintRightHandSide(const std::vector<AffineMap>& handleMaps) const;
-  /// The points' share of A^T b, w^2 B^T t (zero without points).
-  Positions PointRightHandSide(const Positions& pointTargets) const;
+  /// The points' pull away from the rest shape, w^2 B^T (t - B x_rest). With points, every
+  /// solve is for the displacement from the rest shape, whose right-hand side vanishes at rest:
+  /// points at their rest positions give the rest back to rounding of the displacement, not
+  /// of the coordinates.
+  Positions PointPull(const Positions& pointTargets) const;
+  /// The points where the rest shape has them.
+  const Positions& GetRestPoints() const { return this->RestPoints; }
 
   /// Second order: the first-order coordinates of the ROI, and L applied to first-order
   /// coordinates given for the ROI (those outside it stay at rest), which gives second-order
@@ -155,6 +164,7 @@ private:
   Eigen::VectorXd SquaredWeights;
   std::vector<int> HandleGroups;
   PointConstraints Points;
+  Positions RestPoints;
   // L^T (delta - fixed part) for the rest differential coordinates: constant per region.
   Positions RestRightHandSide;
   // The solution with every handle map zero, and each group's n x 4 response (AffineRows.h).

@@ -405,6 +405,8 @@ std::string ImplicitSimilaritySystem::Build(const SurfaceMesh& mesh, const EditR
   this->Points = plain.GetPoints();
   if (!this->Points.IsEmpty())
   {
+    this->Rest = plain.GetRestPositions();
+    this->RestPoints = plain.GetRestPoints();
     std::vector<int> unknowns(this->NumberOfVertices);
     std::iota(unknowns.begin(), unknowns.end(), 0);
     this->Points.Weigh(options.PointWeight, normalMatrix);
@@ -460,31 +462,38 @@ Positions ImplicitSimilaritySystem::Solve(
   const std::vector<AffineMap>& handleMaps, const ParallelFor& loop, const Positions& pointTargets) const
 {
   // Row blocks in parallel: the responses are 3n x 12 per group, too large to stay in cache,
-  // so a move is bound by reading them.
+  // so a move is bound by reading them. With points, the displacement from the rest shape:
+  // the rest solution and the identity maps' responses give the rest back, and leave out.
+  const bool displaced = !this->Points.IsEmpty();
   Positions positions(this->NumberOfVertices, 3);
   loop(0, this->NumberOfVertices, [&](int first, int last) {
     const Eigen::Index rows = 3 * static_cast<Eigen::Index>(last - first);
-    Eigen::VectorXd solution = this->RestSolution.segment(3 * first, rows);
+    Eigen::VectorXd solution = displaced ? Eigen::VectorXd::Zero(rows)
+                                         : Eigen::VectorXd(this->RestSolution.segment(3 * first, rows));
     for (std::size_t g = 0; g < this->GroupResponses.size(); ++g)
     {
-      const Eigen::Matrix<double, 3, 4, Eigen::RowMajor> map =
+      Eigen::Matrix<double, 3, 4, Eigen::RowMajor> map =
         g < handleMaps.size() ? handleMaps[g] : AffineMap::Identity();
+      if (displaced)
+      {
+        map -= AffineMap::Identity();
+      }
       solution.noalias() += this->GroupResponses[g].middleRows(3 * first, rows) *
         Eigen::Map<const Eigen::Matrix<double, 12, 1>>(map.data());
     }
     positions.middleRows(first, last - first) = Deinterleave(solution);
   });
-  if (!this->Points.IsEmpty())
+  if (displaced)
   {
-    positions += this->SolvePoints(pointTargets, loop);
+    positions += this->Rest + this->SolvePoints(pointTargets, loop);
   }
   return positions;
 }
 
 Positions ImplicitSimilaritySystem::SolvePoints(const Positions& pointTargets, const ParallelFor& loop) const
 {
-  const Eigen::VectorXd rhs =
-    Interleave(this->Points.RightHandSide(pointTargets, this->NumberOfVertices));
+  const Eigen::VectorXd rhs = Interleave(
+    this->Points.RightHandSide(pointTargets - this->RestPoints, this->NumberOfVertices));
   return Deinterleave(this->Factor.Solve(rhs, loop));
 }
 
@@ -509,12 +518,15 @@ AffineRows ImplicitSimilaritySystem::GetAffineRows(const std::vector<int>& rows)
 Positions ImplicitSimilaritySystem::SolveDirect(const DeformationSystem& plain,
   const std::vector<AffineMap>& handleMaps, const Positions& pointTargets) const
 {
-  Positions known = plain.ConstraintRightHandSide(handleMaps);
   if (!this->Points.IsEmpty())
   {
-    known += this->Points.RightHandSide(pointTargets, this->NumberOfVertices);
+    const Positions pull = plain.ConstraintRightHandSide(handleMaps) -
+      plain.ConstraintRightHandSide({}) +
+      this->Points.RightHandSide(pointTargets - this->RestPoints, this->NumberOfVertices);
+    return this->Rest + Deinterleave(this->Factor.Solve(Interleave(pull)));
   }
-  const Eigen::VectorXd rhs = this->KnownRightHandSide + Interleave(known);
+  const Eigen::VectorXd rhs =
+    this->KnownRightHandSide + Interleave(plain.ConstraintRightHandSide(handleMaps));
   return Deinterleave(this->Factor.Solve(rhs));
 }
 }

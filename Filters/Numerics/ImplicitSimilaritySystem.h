@@ -66,8 +66,11 @@ private:
 
   int NumberOfVertices = 0;
   SparseCholesky Factor;
-  // The region's points, weighed for this system.
+  // The region's points, weighed for this system; with points, the rest shape and the points
+  // on it, for solves of the displacement from it.
   PointConstraints Points;
+  Positions Rest;
+  Positions RestPoints;
   // A^T b of the known parts (fixed vertices): constant per region.
   Eigen::VectorXd KnownRightHandSide;
   // The solution with every handle map zero, and each group's 3n x 12 response to the entries

@@ -35,6 +35,10 @@ le::DeformationOptions SystemOptions(const vtkLaplacianEditSolver::Options& opti
   system.MaximumFactorBytes = 1048576.0 *
     (options.MaximumFactorMemory > 0.0 ? options.MaximumFactorMemory : availableMemory);
   system.Distributed = options.Distributed;
+  system.Points = options.Points;
+  system.PointsVersion = options.PointsVersion;
+  system.PointWeight = options.PointWeight;
+  system.Bending = options.Bending;
   return system;
 }
 
@@ -141,13 +145,15 @@ std::string vtkLaplacianEditSolver::UpdateRotationModel(const Options& options, 
   return {};
 }
 
-std::string vtkLaplacianEditSolver::Solve(const std::vector<le::AffineMap>& maps)
+std::string vtkLaplacianEditSolver::Solve(
+  const std::vector<le::AffineMap>& maps, const le::PointTargets* points)
 {
   this->Maps = maps;
   const Clock::time_point start = Clock::now();
-  const le::EditStatus status = this->Editor.Solve(this->Maps, this->Solution);
+  const le::EditStatus status = this->Editor.Solve(this->Maps, this->Solution, points);
   Facts& facts = this->LastFacts;
   facts.SolveTime = SecondsSince(start);
+  facts.LargestPointMiss = this->Editor.GetLargestPointMiss();
   if (this->RotationMode == le::RotationMode::AsRigidAsPossible)
   {
     facts.NumberOfARAPIterations = this->Editor.GetLastArapResult().Iterations;

@@ -15,6 +15,7 @@
 
 #include "LaplacianEditor.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -47,6 +48,12 @@ struct vtkLaplacianSolverOptions
   double Convergence = 1e-3;
   bool Acceleration = true;
   bool Extrapolation = true;
+  /// Points pulled to targets (a landmark warp's), their version and their weight.
+  std::shared_ptr<const std::vector<LaplacianEditing::SurfacePoint>> Points;
+  std::uint64_t PointsVersion = 0;
+  double PointWeight = 100.0;
+  /// As-rigid-as-possible: the bending term's weight (0: none).
+  double Bending = 0.0;
 };
 
 class vtkLaplacianEditSolver
@@ -63,6 +70,8 @@ public:
     double SolveTime = 0.0;
     int NumberOfARAPIterations = 0;
     double ARAPEnergy = 0.0;
+    /// The largest distance of a point from its target, in the core's units.
+    double LargestPointMiss = 0.0;
   };
 
   vtkLaplacianEditSolver();
@@ -80,8 +89,10 @@ public:
   /// Brings the rotation model up to date; warns through `reporter` about options it ignores.
   std::string UpdateRotationModel(const Options& options, vtkObject* reporter);
 
-  /// Solves for the handle maps (in the core's frame).
-  std::string Solve(const std::vector<LaplacianEditing::AffineMap>& maps);
+  /// Solves for the handle maps and the points' targets, if there are points (in the core's
+  /// frame).
+  std::string Solve(const std::vector<LaplacianEditing::AffineMap>& maps,
+    const LaplacianEditing::PointTargets* points = nullptr);
 
   /// Starts an update's facts afresh.
   void ResetFacts() { this->LastFacts = Facts(); }

@@ -502,3 +502,18 @@ void vtkLaplacianSurfaceAdapter::IndexRegion(const le::EditRegion& region)
     }
   }
 }
+
+vtkLaplacianOutputEdit vtkLaplacianSurfaceAdapter::GetEdit(const le::Positions& solution,
+  const vtkLaplacianNormalRefresher* normals, std::uint64_t regionVersion) const
+{
+  vtkLaplacianOutputEdit edit;
+  edit.Moved = &this->RegionPoints;
+  edit.Solution = &solution;
+  edit.Center = this->Center;
+  edit.Scale = this->Scale;
+  edit.Normals = normals;
+  edit.VertexRest = &this->Mesh->GetPositions();
+  edit.VertexRows = &this->RowOfVertex;
+  edit.RegionVersion = regionVersion;
+  return edit;
+}

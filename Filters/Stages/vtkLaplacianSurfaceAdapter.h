@@ -103,6 +103,11 @@ public:
   const std::vector<int>& GetRowOfVertex() const { return this->RowOfVertex; }
   const vtkLaplacianMovedPoints& GetRegionPoints() const { return this->RegionPoints; }
 
+  /// A solution of the indexed region as the output writer takes it, with the normals' index
+  /// (null: none) and the region's version.
+  vtkLaplacianOutputEdit GetEdit(const LaplacianEditing::Positions& solution,
+    const vtkLaplacianNormalRefresher* normals, std::uint64_t regionVersion) const;
+
 private:
   // Build's steps: the points in reach (1; an error for a non-finite coordinate), the ring of
   // points around them (2, with their coincident copies when merging), the polygons with a

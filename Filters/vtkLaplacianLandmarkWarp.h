@@ -1,0 +1,271 @@
+/**
+ * @class   vtkLaplacianLandmarkWarp
+ * @brief   warps a surface so that source landmarks reach target landmarks, keeping its details
+ *
+ * vtkLaplacianLandmarkWarp deforms a triangle surface so that each source landmark moves to its
+ * target, the rest of the surface following as rigidly as it can (as-rigid-as-possible, the
+ * default) or as the other rotation modes of vtkLaplacianDeformationFilter keep its details.
+ * Its interface follows vtkThinPlateSplineTransform where it can: SetSourceLandmarks and
+ * SetTargetLandmarks, the same number of points in each. Unlike a thin-plate spline, which
+ * bends space and solves a dense system of the landmarks' size, the warp works on the surface:
+ * one sparse factorization of the surface's size, whatever the number of landmarks, reused
+ * while only the targets change.
+ *
+ * A source landmark need not be a vertex: it is bound to the nearest point of the surface
+ * (barycentric in its triangle), and that point moves by the landmark's displacement. A
+ * landmark farther than BindingTolerance from the surface warns; farther than
+ * MaximumBindingDistance, it lies on no component and is an error. Every connected component
+ * that holds a landmark is warped; the others stay where they are.
+ *
+ * The landmarks come either as two vtkPoints, or as a point set on input port 1
+ * (SetLandmarksConnection): its points are the sources and a three-component point array, by
+ * default "Target" (SetInputArrayToProcess(0, 1, 0, POINTS, name)), the targets. The port takes
+ * precedence. ParaView's "Laplacian Landmark Warp" filter uses the port.
+ *
+ * Output: the input with the warped components' points moved, all point and cell data passed
+ * through, normals refreshed, and a "LandmarkDistance" field array, how far each landmark
+ * ended from its target (0 up to rounding with ExactFit). On bad input the filter reports an
+ * error, passes the input through and sets GetErrorCode() to vtkErrorCode::UserError.
+ * Documentation/landmark-warps.md has the guide.
+ *
+ * @sa vtkLaplacianDeformationFilter vtkThinPlateSplineTransform
+ */
+#ifndef vtkLaplacianLandmarkWarp_h
+#define vtkLaplacianLandmarkWarp_h
+
+#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkAlgorithmOutput;
+class vtkPoints;
+struct vtkLaplacianSolverOptions;
+
+class VTKLAPLACIANEDITING_EXPORT vtkLaplacianLandmarkWarp : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLaplacianLandmarkWarp* New();
+  vtkTypeMacro(vtkLaplacianLandmarkWarp, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum LaplacianWeightTypes
+  {
+    WEIGHTS_UNIFORM = 0,
+    WEIGHTS_COTANGENT = 1
+  };
+  enum RotationModes
+  {
+    ROTATION_NONE = 0,
+    ROTATION_EXPLICIT = 1,
+    ROTATION_IMPLICIT = 2,
+    ROTATION_AS_RIGID_AS_POSSIBLE = 3
+  };
+  enum Solvers
+  {
+    SOLVER_CHOLMOD = 0,
+    SOLVER_SIMPLICIAL_LDLT = 1
+  };
+
+  ///@{
+  /**
+   * The landmarks, as vtkThinPlateSplineTransform takes them: the same number of points in
+   * each, in the input's coordinates. Changing only the targets reuses the factorization.
+   */
+  virtual void SetSourceLandmarks(vtkPoints* sources);
+  vtkGetObjectMacro(SourceLandmarks, vtkPoints);
+  virtual void SetTargetLandmarks(vtkPoints* targets);
+  vtkGetObjectMacro(TargetLandmarks, vtkPoints);
+  ///@}
+
+  ///@{
+  /**
+   * The landmarks as a point set on input port 1, which takes precedence over the vtkPoints:
+   * its points are the sources, and the three-component point array that
+   * SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name) names,
+   * "Target" by default, holds the targets.
+   */
+  void SetLandmarksConnection(vtkAlgorithmOutput* landmarks) { this->SetInputConnection(1, landmarks); }
+  void SetLandmarksData(vtkDataObject* landmarks);
+  ///@}
+
+  ///@{
+  /**
+   * How details keep their orientation, as in vtkLaplacianDeformationFilter:
+   * AsRigidAsPossible (the default: the best quality under large rotations), None, Explicit
+   * or Implicit.
+   */
+  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
+  vtkGetMacro(RotationMode, int);
+  void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
+  void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
+  void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
+  void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
+  ///@}
+
+  ///@{
+  /** Edge weights of the operator: Cotangent (the default, clamped) or Uniform. */
+  vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
+  vtkGetMacro(LaplacianWeights, int);
+  void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
+  void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
+  ///@}
+
+  ///@{
+  /**
+   * An exact fit (the default) moves every landmark onto its target, to 1e-10 of the
+   * diagonal; off, each landmark is pulled by LandmarkWeight (relative to the surface's
+   * stiffness, default 1) and may end short of its target, as noisy landmarks should.
+   */
+  vtkSetMacro(ExactFit, vtkTypeBool);
+  vtkGetMacro(ExactFit, vtkTypeBool);
+  vtkBooleanMacro(ExactFit, vtkTypeBool);
+  vtkSetClampMacro(LandmarkWeight, double, 1e-6, 1e6);
+  vtkGetMacro(LandmarkWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * As-rigid-as-possible mode: the weight of its bending term (100), a second-order term that
+   * keeps the surface smooth between sparse landmarks. Without it (0), the first-order energy
+   * grows a cone at each landmark and lets the parts between landmarks flop.
+   */
+  vtkSetClampMacro(BendingWeight, double, 0.0, 1e6);
+  vtkGetMacro(BendingWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * As-rigid-as-possible mode: the most iterations an update (100), the relative energy
+   * decrease an iteration that stops it (1e-4), and while Dragging (a landmark dragged
+   * interactively), the most iterations an update (DragARAPIterations, 2).
+   */
+  vtkSetClampMacro(ARAPIterations, int, 0, VTK_INT_MAX);
+  vtkGetMacro(ARAPIterations, int);
+  vtkSetClampMacro(Convergence, double, 0.0, 1.0);
+  vtkGetMacro(Convergence, double);
+  vtkSetMacro(Dragging, vtkTypeBool);
+  vtkGetMacro(Dragging, vtkTypeBool);
+  vtkBooleanMacro(Dragging, vtkTypeBool);
+  vtkSetClampMacro(DragARAPIterations, int, 1, VTK_INT_MAX);
+  vtkGetMacro(DragARAPIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Explicit mode: the smooth normals' support as a fraction of the diagonal (0.05), and the
+   * reference-rotate-solve passes (1). Implicit mode: the rigid step after the linear solve
+   * (on).
+   */
+  vtkSetClampMacro(NormalSmoothingRadius, double, 1e-6, 1.0);
+  vtkGetMacro(NormalSmoothingRadius, double);
+  vtkSetClampMacro(NumberOfIterations, int, 1, 1000);
+  vtkGetMacro(NumberOfIterations, int);
+  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Binding, in fractions of the input's diagonal: a landmark farther than BindingTolerance
+   * (0.01) from the surface warns, one farther than MaximumBindingDistance (0.1) is an error.
+   */
+  vtkSetClampMacro(BindingTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(BindingTolerance, double);
+  vtkSetClampMacro(MaximumBindingDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumBindingDistance, double);
+  ///@}
+
+  ///@{
+  /** Points at the same position, up to rounding, are one surface vertex (on). */
+  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /** The sparse solver: CHOLMOD (the default where built) or Eigen's SimplicialLDLT. */
+  vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_SIMPLICIAL_LDLT);
+  vtkGetMacro(Solver, int);
+  ///@}
+
+  ///@{
+  /**
+   * Facts of the last update: the landmarks, the vertices warped (the components holding
+   * landmarks), the factorizations so far, the as-rigid-as-possible iterations and energy,
+   * the largest and root-mean-square distance of a landmark from its target (mesh units), and
+   * the seconds spent binding the landmarks, setting up (region and factorization) and solving.
+   */
+  vtkGetMacro(NumberOfLandmarks, int);
+  vtkGetMacro(NumberOfWarpedVertices, int);
+  vtkGetMacro(NumberOfFactorizations, int);
+  vtkGetMacro(NumberOfARAPIterations, int);
+  vtkGetMacro(ARAPEnergy, double);
+  vtkGetMacro(MaximumLandmarkDistance, double);
+  vtkGetMacro(RMSLandmarkDistance, double);
+  vtkGetMacro(BindingTime, double);
+  vtkGetMacro(SetupTime, double);
+  vtkGetMacro(SolveTime, double);
+  ///@}
+
+  /** Includes the landmarks' modification times. */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLaplacianLandmarkWarp();
+  ~vtkLaplacianLandmarkWarp() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkLaplacianLandmarkWarp(const vtkLaplacianLandmarkWarp&) = delete;
+  void operator=(const vtkLaplacianLandmarkWarp&) = delete;
+
+  // RequestData's stages; each reports its own error and returns false on failure.
+  bool FindLandmarks(vtkPoints*& sources, vtkPoints*& targets);
+  bool UpdateSurface(vtkPolyData* input);
+  bool BindLandmarks(vtkPoints* sources);
+  bool UpdateSystem(vtkPolyData* input);
+  bool Solve(vtkPoints* targets);
+  void WriteOutput(vtkPolyData* input, vtkPolyData* output, vtkPoints* targets);
+  vtkLaplacianSolverOptions SolverOptions() const;
+  bool Fail(const std::string& message);
+
+  vtkPoints* SourceLandmarks = nullptr;
+  vtkPoints* TargetLandmarks = nullptr;
+  int RotationMode = ROTATION_AS_RIGID_AS_POSSIBLE;
+  int LaplacianWeights = WEIGHTS_COTANGENT;
+  vtkTypeBool ExactFit = 1;
+  double LandmarkWeight = 1.0;
+  double BendingWeight = 100.0;
+  int ARAPIterations = 100;
+  double Convergence = 1e-4;
+  vtkTypeBool Dragging = 0;
+  int DragARAPIterations = 2;
+  double NormalSmoothingRadius = 0.05;
+  int NumberOfIterations = 1;
+  vtkTypeBool PreserveDetailScale = 1;
+  double BindingTolerance = 0.01;
+  double MaximumBindingDistance = 0.1;
+  vtkTypeBool MergeCoincidentPoints = 1;
+  int Solver = SOLVER_CHOLMOD;
+
+  int NumberOfLandmarks = 0;
+  int NumberOfWarpedVertices = 0;
+  int NumberOfFactorizations = 0;
+  int NumberOfARAPIterations = 0;
+  double ARAPEnergy = 0.0;
+  double MaximumLandmarkDistance = 0.0;
+  double RMSLandmarkDistance = 0.0;
+  double BindingTime = 0.0;
+  double SetupTime = 0.0;
+  double SolveTime = 0.0;
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,375 @@
+// vtkLaplacianLandmarkWarp: landmarks at their sources give the input back, a rigid motion of
+// every landmark moves the surface rigidly, an exact fit meets every target (checked by
+// locating each landmark on the input and the output independently), components without
+// landmarks stay, only new targets reuse the factor, and bad landmarks are clear errors.
+#include "FilterTestHelpers.h"
+#include "KnownWarps.h"
+
+#include "vtkLaplacianLandmarkWarp.h"
+
+#include "vtkAppendPolyData.h"
+#include "vtkCellData.h"
+#include "vtkCellLocator.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkGenericCell.h"
+#include "vtkIdFilter.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace FilterTestHelpers;
+
+namespace
+{
+using KnownWarps::Moved;
+using KnownWarps::SurfacePoints;
+
+// Double-precision points: the exact fit is checked to 1e-9 of the diagonal, finer than float
+// points (the meshes' own) can hold.
+vtkSmartPointer<vtkPolyData> Load(const std::string& name)
+{
+  auto mesh = KnownWarps::LoadDouble(DataDir + "/" + name);
+  EXPECT_TRUE(mesh && mesh->GetNumberOfPoints() > 0) << name;
+  return mesh;
+}
+
+vtkSmartPointer<vtkLaplacianLandmarkWarp> Warp(vtkPolyData* mesh, vtkPoints* sources, vtkPoints* targets)
+{
+  auto warp = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
+  warp->SetInputData(mesh);
+  warp->SetSourceLandmarks(sources);
+  warp->SetTargetLandmarks(targets);
+  return warp;
+}
+
+// A bend about the z axis through `pivot`, by `perUnit` radians per unit of height (y).
+std::function<void(const double*, double*)> Bend(const double pivot[3], double perUnit)
+{
+  const std::array<double, 3> center = { pivot[0], pivot[1], pivot[2] };
+  return [center, perUnit](const double* p, double* q) {
+    const double angle = perUnit * (p[1] - center[1]);
+    const double x = p[0] - center[0], y = p[1] - center[1];
+    q[0] = center[0] + std::cos(angle) * x - std::sin(angle) * y;
+    q[1] = center[1] + std::sin(angle) * x + std::cos(angle) * y;
+    q[2] = p[2];
+  };
+}
+
+// Where each landmark ended, found independently: its nearest point on the input (cell and
+// weights), evaluated on the output, plus its offset from the input surface.
+double LargestMiss(vtkPolyData* input, vtkPolyData* output, vtkPoints* sources, vtkPoints* targets)
+{
+  vtkNew<vtkCellLocator> locator;
+  locator->SetDataSet(input);
+  locator->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < sources->GetNumberOfPoints(); ++i)
+  {
+    double source[3], closest[3], squared, weights[3], pcoords[3], sub, target[3], end[3] = { 0, 0, 0 };
+    vtkIdType id;
+    int subId;
+    sources->GetPoint(i, source);
+    locator->FindClosestPoint(source, closest, cell, id, subId, squared);
+    cell->EvaluatePosition(closest, nullptr, subId, pcoords, sub, weights);
+    for (int c = 0; c < 3; ++c)
+    {
+      double p[3];
+      output->GetPoint(cell->GetPointId(c), p);
+      for (int k = 0; k < 3; ++k)
+      {
+        end[k] += weights[c] * p[k] + (c == 0 ? source[k] - closest[k] : 0.0);
+      }
+    }
+    targets->GetPoint(i, target);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(end, target)));
+  }
+  return worst;
+}
+}
+
+TEST(LandmarkWarp, LandmarksAtTheirSourcesGiveTheInputBack)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 200);
+  for (int mode = vtkLaplacianLandmarkWarp::ROTATION_NONE;
+       mode <= vtkLaplacianLandmarkWarp::ROTATION_AS_RIGID_AS_POSSIBLE; ++mode)
+  {
+    SCOPED_TRACE(mode);
+    auto warp = Warp(bunny, sources, sources);
+    warp->SetRotationMode(mode);
+    warp->Update();
+    EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::NoError);
+    EXPECT_LE(MaxPointDistance(warp->GetOutput(), bunny), 1e-12 * Diagonal(bunny));
+  }
+}
+
+TEST(LandmarkWarp, ARigidMotionOfEveryLandmarkMovesTheSurfaceRigidly)
+{
+  auto spot = Load("spot.obj");
+  auto sources = SurfacePoints(spot, 60);
+  vtkNew<vtkTransform> motion;
+  motion->Translate(0.3, -0.1, 0.2);
+  motion->RotateWXYZ(70.0, 1.0, 2.0, 0.5);
+  auto map = [&](const double* p, double* q) { motion->TransformPoint(p, q); };
+  auto warp = Warp(spot, sources, Moved(sources, map));
+  warp->SetARAPIterations(2000);
+  warp->SetConvergence(1e-12);
+  warp->Update();
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < spot->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    map(spot->GetPoint(i), p);
+    warp->GetOutput()->GetPoint(i, q);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+  }
+  std::cout << "rigid motion: largest distance " << worst / Diagonal(spot) << " of the diagonal after "
+            << warp->GetNumberOfARAPIterations() << " iterations\n";
+  EXPECT_LE(worst, 1e-6 * Diagonal(spot));
+}
+
+TEST(LandmarkWarp, AnExactFitMeetsEveryTarget)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 300);
+  double bounds[6];
+  bunny->GetBounds(bounds);
+  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
+  auto targets = Moved(sources, Bend(pivot, 4.0));
+  for (int mode = vtkLaplacianLandmarkWarp::ROTATION_NONE;
+       mode <= vtkLaplacianLandmarkWarp::ROTATION_AS_RIGID_AS_POSSIBLE; ++mode)
+  {
+    SCOPED_TRACE(mode);
+    auto warp = Warp(bunny, sources, targets);
+    warp->SetRotationMode(mode);
+    warp->Update();
+    const double miss = LargestMiss(bunny, warp->GetOutput(), sources, targets);
+    EXPECT_LE(miss, 1e-9 * Diagonal(bunny));
+    EXPECT_LE(warp->GetMaximumLandmarkDistance(), 1e-9 * Diagonal(bunny));
+    auto* distances = vtkDoubleArray::SafeDownCast(
+      warp->GetOutput()->GetFieldData()->GetArray("LandmarkDistance"));
+    ASSERT_NE(distances, nullptr);
+    EXPECT_EQ(distances->GetNumberOfTuples(), sources->GetNumberOfPoints());
+    EXPECT_GT(MaxPointDistance(warp->GetOutput(), bunny), 0.05 * Diagonal(bunny));
+  }
+}
+
+TEST(LandmarkWarp, ASoftFitPullsAsItsWeightSays)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 100);
+  double bounds[6];
+  bunny->GetBounds(bounds);
+  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
+  auto targets = Moved(sources, Bend(pivot, 4.0));
+  double misses[2];
+  const double weights[2] = { 0.1, 10.0 };
+  for (int k = 0; k < 2; ++k)
+  {
+    auto warp = Warp(bunny, sources, targets);
+    warp->ExactFitOff();
+    warp->SetLandmarkWeight(weights[k]);
+    warp->Update();
+    misses[k] = warp->GetRMSLandmarkDistance();
+  }
+  std::cout << "soft fit: RMS miss " << misses[0] / Diagonal(bunny) << " of the diagonal at weight 0.1, "
+            << misses[1] / Diagonal(bunny) << " at 10\n";
+  EXPECT_GT(misses[0], 3.0 * misses[1]);
+  EXPECT_GT(misses[1], 0.0);
+}
+
+TEST(LandmarkWarp, ComponentsWithoutLandmarksStay)
+{
+  vtkNew<vtkSphereSource> left, right;
+  left->SetCenter(-1.0, 0.0, 0.0);
+  right->SetCenter(1.0, 0.0, 0.0);
+  for (auto* sphere : { left.Get(), right.Get() })
+  {
+    sphere->SetThetaResolution(40);
+    sphere->SetPhiResolution(20);
+  }
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(left->GetOutputPort());
+  both->AddInputConnection(right->GetOutputPort());
+  both->Update();
+  vtkPolyData* spheres = both->GetOutput();
+  vtkNew<vtkPoints> sources, targets;
+  sources->InsertNextPoint(-1.0, 0.0, 0.5);
+  sources->InsertNextPoint(-1.0, 0.0, -0.5);
+  targets->InsertNextPoint(-1.0, 0.0, 0.7);
+  targets->InsertNextPoint(-1.0, 0.0, -0.5);
+  auto warp = Warp(spheres, sources, targets);
+  warp->Update();
+  EXPECT_EQ(warp->GetNumberOfWarpedVertices(), left->GetOutput()->GetNumberOfPoints());
+  const vtkIdType firstRight = left->GetOutput()->GetNumberOfPoints();
+  int moved = 0;
+  for (vtkIdType i = 0; i < spheres->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    spheres->GetPoint(i, p);
+    warp->GetOutput()->GetPoint(i, q);
+    const bool same = p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+    EXPECT_TRUE(i < firstRight || same) << "point " << i << " of the other sphere moved";
+    moved += same ? 0 : 1;
+  }
+  EXPECT_GT(moved, 100);
+}
+
+TEST(LandmarkWarp, NewTargetsReuseTheFactorization)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 500);
+  vtkNew<vtkPoints> targets;
+  targets->DeepCopy(sources);
+  auto warp = Warp(bunny, sources, targets);
+  warp->Update();
+  const int factorizations = warp->GetNumberOfFactorizations();
+  warp->DraggingOn();
+  for (int step = 1; step <= 5; ++step)
+  {
+    double p[3];
+    sources->GetPoint(0, p);
+    p[1] += 0.01 * step * Diagonal(bunny);
+    targets->SetPoint(0, p);
+    targets->Modified();
+    warp->Update();
+    EXPECT_LE(warp->GetNumberOfARAPIterations(), warp->GetDragARAPIterations());
+    EXPECT_LE(warp->GetMaximumLandmarkDistance(), 1e-9 * Diagonal(bunny));
+  }
+  warp->DraggingOff();
+  warp->Update();
+  EXPECT_EQ(warp->GetNumberOfFactorizations(), factorizations);
+  EXPECT_LE(LargestMiss(bunny, warp->GetOutput(), sources, targets), 1e-9 * Diagonal(bunny));
+}
+
+TEST(LandmarkWarp, LandmarksFromAPointSetOnPortOne)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 150);
+  double bounds[6];
+  bunny->GetBounds(bounds);
+  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
+  auto targets = Moved(sources, Bend(pivot, 3.0));
+  auto byPoints = Warp(bunny, sources, targets);
+  byPoints->Update();
+
+  vtkNew<vtkPolyData> landmarks;
+  landmarks->SetPoints(sources);
+  vtkNew<vtkDoubleArray> target;
+  target->SetName("Target");
+  target->DeepCopy(targets->GetData());
+  target->SetName("Target");
+  landmarks->GetPointData()->AddArray(target);
+  vtkNew<vtkLaplacianLandmarkWarp> byPort;
+  byPort->SetInputData(bunny);
+  byPort->SetLandmarksData(landmarks);
+  byPort->Update();
+  EXPECT_EQ(byPort->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_EQ(MaxPointDistance(byPort->GetOutput(), byPoints->GetOutput()), 0.0);
+
+  landmarks->GetPointData()->RemoveArray("Target");
+  ErrorCatcher errors(byPort);
+  byPort->Modified();
+  byPort->Update();
+  EXPECT_NE(errors.Messages.find("three components holding the targets"), std::string::npos);
+  EXPECT_EQ(MaxPointDistance(byPort->GetOutput(), bunny), 0.0);
+}
+
+TEST(LandmarkWarp, PointAndCellDataPassThrough)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  vtkNew<vtkIdFilter> ids;
+  ids->SetInputData(bunny);
+  ids->SetPointIdsArrayName("PointIds");
+  ids->SetCellIdsArrayName("CellIds");
+  ids->Update();
+  auto* input = vtkPolyData::SafeDownCast(ids->GetOutput());
+  auto sources = SurfacePoints(input, 50);
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
+  auto warp = Warp(input, sources, Moved(sources, Bend(pivot, 2.0)));
+  warp->Update();
+  vtkPolyData* output = warp->GetOutput();
+  ASSERT_NE(output->GetPointData()->GetArray("PointIds"), nullptr);
+  ASSERT_NE(output->GetCellData()->GetArray("CellIds"), nullptr);
+  EXPECT_EQ(output->GetNumberOfCells(), input->GetNumberOfCells());
+  EXPECT_EQ(output->GetPointData()->GetArray("PointIds")->GetTuple1(123), 123.0);
+}
+
+TEST(LandmarkWarp, FarLandmarksWarnOrFail)
+{
+  // A sphere of radius 0.5: a landmark at radius r lies r - 0.5 from the surface.
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(60);
+  source->SetPhiResolution(30);
+  source->Update();
+  vtkPolyData* sphere = source->GetOutput();
+  const double diagonal = Diagonal(sphere);
+  auto landmarksAt = [](double radius) {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->InsertNextPoint(0.0, 0.0, radius);
+    points->InsertNextPoint(0.0, 0.0, -0.5);
+    points->InsertNextPoint(0.5, 0.0, 0.0);
+    return points;
+  };
+  {
+    auto sources = landmarksAt(0.5 + 0.03 * diagonal); // bound, with a warning
+    auto warp = Warp(sphere, sources, sources);
+    ErrorCatcher warnings(warp, vtkCommand::WarningEvent);
+    warp->Update();
+    EXPECT_NE(warnings.Messages.find("farther from the surface than BindingTolerance"), std::string::npos);
+    EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::NoError);
+    EXPECT_LE(MaxPointDistance(warp->GetOutput(), sphere), 1e-12 * diagonal);
+  }
+  auto sources = landmarksAt(0.5 + 0.2 * diagonal); // on no component
+  auto warp = Warp(sphere, sources, sources);
+  ErrorCatcher errors(warp);
+  warp->Update();
+  EXPECT_NE(errors.Messages.find("Source landmark 0 lies on no component"), std::string::npos);
+  EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::UserError);
+  EXPECT_EQ(MaxPointDistance(warp->GetOutput(), sphere), 0.0);
+}
+
+TEST(LandmarkWarp, BadLandmarksAreClearErrors)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 10);
+  vtkNew<vtkPoints> fewer, nan;
+  fewer->DeepCopy(sources);
+  fewer->SetNumberOfPoints(9);
+  nan->DeepCopy(sources);
+  nan->SetPoint(4, std::nan(""), 0.0, 0.0);
+  const struct
+  {
+    vtkPoints* Sources;
+    vtkPoints* Targets;
+    const char* Message;
+  } cases[] = { { sources, fewer, "There are 10 source landmarks and 9 targets" },
+    { nan, sources, "Source landmark 4 has a NaN or infinite coordinate." },
+    { sources, nan, "Target landmark 4 has a NaN or infinite coordinate." },
+    { nullptr, nullptr, "No landmarks" } };
+  for (const auto& bad : cases)
+  {
+    SCOPED_TRACE(bad.Message);
+    auto warp = Warp(bunny, bad.Sources, bad.Targets);
+    ErrorCatcher errors(warp);
+    warp->Update();
+    EXPECT_NE(errors.Messages.find(bad.Message), std::string::npos) << errors.Messages;
+    EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::UserError);
+    EXPECT_EQ(MaxPointDistance(warp->GetOutput(), bunny), 0.0); // the input, passed through
+  }
+  // A surface without polygons.
+  vtkNew<vtkPolyData> empty;
+  auto warp = Warp(empty, sources, sources);
+  ErrorCatcher errors(warp);
+  warp->Update();
+  EXPECT_NE(errors.Messages.find("The input mesh is empty."), std::string::npos);
+}
