@@ -12,11 +12,13 @@
 #include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <chrono>
@@ -48,6 +50,8 @@ double SecondsSince(Clock::time_point start)
 // The pull of an exact fit's soft constraints: strong enough that the corrections converge in
 // a few rounds, against the system's stiffness.
 constexpr double ExactFitWeight = 100.0;
+// An exact fit that ends farther than this fraction of the diagonal from a target warns.
+constexpr double UnmetFraction = 1e-8;
 }
 
 // The stages of a warp, in the order RequestData runs them.
@@ -120,8 +124,15 @@ int vtkLaplacianLandmarkWarp::RequestData(
   output->ShallowCopy(input);
   vtkPoints* sources = nullptr;
   vtkPoints* targets = nullptr;
+  // A warp needs the whole surface: one piece of a distributed one would tear at its edges.
+  const int pieces = outputVector->GetInformationObject(0)->Get(
+    vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
   // Each stage reports its own error; the output stays the input.
-  if (!this->Fail(vtkLaplacianSurfaceAdapter::CheckSurface(input)) ||
+  if (!this->Fail(pieces > 1
+        ? "The warp needs the whole surface and was asked for one of " + std::to_string(pieces) +
+          " pieces; run it in a serial session (the built-in server, or one process)"
+        : std::string()) ||
+    !this->Fail(vtkLaplacianSurfaceAdapter::CheckSurface(input)) ||
     !this->FindLandmarks(sources, targets))
   {
     return 1;
@@ -308,6 +319,16 @@ bool vtkLaplacianLandmarkWarp::Solve(vtkPoints* targets)
   this->SolveTime = facts.SolveTime;
   this->NumberOfARAPIterations = facts.NumberOfARAPIterations;
   this->ARAPEnergy = facts.ARAPEnergy;
+  // The core's miss, in fractions of the diagonal and in double precision (the output's float
+  // points would add their rounding).
+  if (this->ExactFit && !this->Dragging && facts.LargestPointMiss > UnmetFraction)
+  {
+    vtkWarningMacro(<< "The landmarks cannot all be met: the farthest ends "
+                    << facts.LargestPointMiss << " of the diagonal from its target. A triangle "
+                    << "moves affinely, so where more landmarks than corners share a few "
+                    << "triangles they are fit in the least-squares sense; use fewer landmarks "
+                    << "there, a finer mesh, or a soft fit (ExactFitOff).");
+  }
   return true;
 }
 

@@ -373,3 +373,60 @@ TEST(LandmarkWarp, BadLandmarksAreClearErrors)
   warp->Update();
   EXPECT_NE(errors.Messages.find("The input mesh is empty."), std::string::npos);
 }
+
+TEST(LandmarkWarp, APieceOfADistributedSurfaceIsRefused)
+{
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 10);
+  auto warp = Warp(bunny, sources, Moved(sources, [](const double* p, double* q) {
+    q[0] = p[0] + 0.01;
+    q[1] = p[1];
+    q[2] = p[2];
+  }));
+  ErrorCatcher errors(warp);
+  warp->UpdatePiece(0, 2, 0);
+  EXPECT_NE(errors.Messages.find("needs the whole surface and was asked for one of 2 pieces"),
+    std::string::npos);
+  EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::UserError);
+  EXPECT_EQ(MaxPointDistance(warp->GetOutput(), bunny), 0.0);
+}
+
+TEST(LandmarkWarp, LandmarksATriangleCannotAllMeetWarnAndFitInLeastSquares)
+{
+  // Four landmarks in one triangle: three fix its affine motion, the fourth asks another.
+  auto bunny = Load("stanford-bunny.obj");
+  vtkNew<vtkIdList> corners;
+  bunny->GetCellPoints(1000, corners);
+  double p[3][3];
+  for (int c = 0; c < 3; ++c)
+  {
+    bunny->GetPoint(corners->GetId(c), p[c]);
+  }
+  const double weights[4][3] = { { 0.6, 0.2, 0.2 }, { 0.2, 0.6, 0.2 }, { 0.2, 0.2, 0.6 },
+    { 1.0 / 3, 1.0 / 3, 1.0 / 3 } };
+  vtkNew<vtkPoints> sources, targets;
+  sources->SetDataTypeToDouble();
+  for (const auto& w : weights)
+  {
+    double x[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      x[k] = w[0] * p[0][k] + w[1] * p[1][k] + w[2] * p[2][k];
+    }
+    sources->InsertNextPoint(x);
+  }
+  targets->DeepCopy(sources);
+  double lifted[3];
+  sources->GetPoint(3, lifted);
+  lifted[1] += 0.01 * Diagonal(bunny);
+  targets->SetPoint(3, lifted);
+  auto warp = Warp(bunny, sources, targets);
+  ErrorCatcher warnings(warp, vtkCommand::WarningEvent);
+  warp->Update();
+  EXPECT_NE(warnings.Messages.find("The landmarks cannot all be met"), std::string::npos);
+  EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::NoError);
+  // Least squares: the lift is shared, each landmark short of its target, none of it lost.
+  const double miss = warp->GetMaximumLandmarkDistance();
+  EXPECT_GT(miss, 1e-3 * Diagonal(bunny));
+  EXPECT_LT(miss, 0.01 * Diagonal(bunny));
+}
