@@ -11,17 +11,23 @@
 //   CactusModes     CGAL's cactus edit (.sel/.def, a 70-degree turn): none, explicit (five
 //                   iterations), implicit, as rigid as possible (cotangent weights)
 //   TwistModes      the bunny's ear twisted 120 degrees about its axis, in the same modes
+//   LandmarkWarp    the articulated known warp (KnownWarps.h) from 100 landmarks: the rest,
+//                   the true shape, VTK's thin-plate spline and vtkLaplacianLandmarkWarp
 #include "EditingScene.h"
+#include "KnownWarps.h"
 #include "ReferenceEdits.h"
 
 #include "vtkBumpyPlaneSource.h"
 #include "vtkLaplacianDeformationFilter.h"
+#include "vtkLaplacianLandmarkWarp.h"
 
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkOBJReader.h"
 #include "vtkPlaneSource.h"
 #include "vtkRegressionTestImage.h"
+#include "vtkThinPlateSplineTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkTransform.h"
 
 #include <functional>
@@ -221,12 +227,43 @@ Scene TwistModes(const std::string& data)
   return scene;
 }
 
+Scene LandmarkWarp(const std::string& data)
+{
+  const KnownWarps::Warp warp = KnownWarps::Articulated(data);
+  if (!warp.Mesh || warp.Mesh->GetNumberOfPoints() == 0)
+  {
+    return Scene();
+  }
+  auto sources = KnownWarps::SurfacePoints(warp.Mesh, 100);
+  auto targets = KnownWarps::Moved(sources, warp.Map);
+  auto truth = vtkSmartPointer<vtkPolyData>::New();
+  truth->DeepCopy(warp.Mesh);
+  truth->SetPoints(KnownWarps::Moved(warp.Mesh->GetPoints(), warp.Map));
+  vtkNew<vtkThinPlateSplineTransform> spline;
+  spline->SetSourceLandmarks(sources);
+  spline->SetTargetLandmarks(targets);
+  vtkNew<vtkTransformPolyDataFilter> splined;
+  splined->SetInputData(warp.Mesh);
+  splined->SetTransform(spline);
+  splined->Update();
+  vtkNew<vtkLaplacianLandmarkWarp> warped;
+  warped->SetInputData(warp.Mesh);
+  warped->SetSourceLandmarks(sources);
+  warped->SetTargetLandmarks(targets);
+  warped->Update();
+  Scene scene;
+  scene.Meshes = { warp.Mesh, truth, splined->GetOutput(), warped->GetOutput() };
+  scene.ViewDirection[0] = 0.0, scene.ViewDirection[1] = -1.0, scene.ViewDirection[2] = 0.0;
+  scene.ViewUp[0] = 0.0, scene.ViewUp[1] = 0.0, scene.ViewUp[2] = 1.0;
+  return scene;
+}
+
 int main(int argc, char* argv[])
 {
   const std::map<std::string, std::function<Scene(const std::string&)>> cases = {
     { "BumpyPlaneEdit", BumpyPlaneEdit }, { "Fig6Rotations", Fig6Rotations },
     { "Fig3Orders", Fig3Orders }, { "BunnyModes", BunnyModes }, { "CactusModes", CactusModes },
-    { "TwistModes", TwistModes }
+    { "TwistModes", TwistModes }, { "LandmarkWarp", LandmarkWarp }
   };
   if (argc < 3 || !cases.count(argv[1]))
   {
