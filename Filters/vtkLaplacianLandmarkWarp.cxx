@@ -127,12 +127,15 @@ int vtkLaplacianLandmarkWarp::RequestData(
   // A warp needs the whole surface: one piece of a distributed one would tear at its edges.
   const int pieces = outputVector->GetInformationObject(0)->Get(
     vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (pieces > 1)
+  {
+    this->Check("The warp needs the whole surface and was asked for one of " +
+      std::to_string(pieces) + " pieces; run it in a serial session (the built-in server, or "
+      "one process)");
+    return 1;
+  }
   // Each stage reports its own error; the output stays the input.
-  if (!this->Fail(pieces > 1
-        ? "The warp needs the whole surface and was asked for one of " + std::to_string(pieces) +
-          " pieces; run it in a serial session (the built-in server, or one process)"
-        : std::string()) ||
-    !this->Fail(vtkLaplacianSurfaceAdapter::CheckSurface(input)) ||
+  if (!this->Check(vtkLaplacianSurfaceAdapter::CheckSurface(input)) ||
     !this->FindLandmarks(sources, targets))
   {
     return 1;
@@ -161,13 +164,13 @@ int vtkLaplacianLandmarkWarp::RequestData(
   return 1;
 }
 
-bool vtkLaplacianLandmarkWarp::Fail(const std::string& message)
+bool vtkLaplacianLandmarkWarp::Check(const std::string& error)
 {
-  if (message.empty())
+  if (error.empty())
   {
     return true;
   }
-  vtkErrorMacro(<< message);
+  vtkErrorMacro(<< error);
   this->SetErrorCode(vtkErrorCode::UserError);
   return false;
 }
@@ -181,7 +184,7 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
     vtkDataArray* array = this->GetInputArrayToProcess(0, landmarks);
     if (!sources || !array || array->GetNumberOfComponents() != 3)
     {
-      return this->Fail("The landmarks on input port 1 need points (the sources) and a point "
+      return this->Check("The landmarks on input port 1 need points (the sources) and a point "
                         "array of three components holding the targets (\"Target\" unless "
                         "SetInputArrayToProcess names another).");
     }
@@ -195,7 +198,7 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
   }
   if (!sources || !targets || sources->GetNumberOfPoints() == 0)
   {
-    return this->Fail("No landmarks: SetSourceLandmarks and SetTargetLandmarks, or connect a "
+    return this->Check("No landmarks: SetSourceLandmarks and SetTargetLandmarks, or connect a "
                       "point set with a Target point array to input port 1.");
   }
   if (sources->GetNumberOfPoints() != targets->GetNumberOfPoints())
@@ -203,7 +206,7 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
     std::ostringstream message;
     message << "There are " << sources->GetNumberOfPoints() << " source landmarks and "
             << targets->GetNumberOfPoints() << " targets: give each source landmark one target.";
-    return this->Fail(message.str());
+    return this->Check(message.str());
   }
   this->NumberOfLandmarks = static_cast<int>(sources->GetNumberOfPoints());
   return true;
@@ -220,7 +223,7 @@ bool vtkLaplacianLandmarkWarp::UpdateSurface(vtkPolyData* input)
   {
     internals.Solver.SetMesh(internals.Surface.GetMesh());
   }
-  return this->Fail(error);
+  return this->Check(error);
 }
 
 bool vtkLaplacianLandmarkWarp::BindLandmarks(vtkPoints* sources)
@@ -228,7 +231,7 @@ bool vtkLaplacianLandmarkWarp::BindLandmarks(vtkPoints* sources)
   vtkInternals& internals = *this->Internals;
   const Clock::time_point start = Clock::now();
   bool rebound = false;
-  if (!this->Fail(internals.Binder.Update(
+  if (!this->Check(internals.Binder.Update(
         sources, internals.Surface, this->MaximumBindingDistance * internals.Diagonal, rebound)))
   {
     return false;
@@ -286,7 +289,7 @@ bool vtkLaplacianLandmarkWarp::UpdateSystem(vtkPolyData* input)
   const std::string error = internals.Solver.UpdateRegion(
     request, [] { return std::vector<int>(); }, options, rebuilt);
   this->NumberOfFactorizations = internals.Solver.GetEditor().GetNumberOfFactorizations();
-  if (!this->Fail(error))
+  if (!this->Check(error))
   {
     return false;
   }
@@ -295,7 +298,7 @@ bool vtkLaplacianLandmarkWarp::UpdateSystem(vtkPolyData* input)
     internals.Surface.IndexRegion(internals.Solver.GetEditor().GetRegion());
     internals.Normals.Index(input, internals.Surface);
   }
-  const bool ok = this->Fail(internals.Solver.UpdateRotationModel(options, this));
+  const bool ok = this->Check(internals.Solver.UpdateRotationModel(options, this));
   this->NumberOfFactorizations = internals.Solver.GetEditor().GetNumberOfFactorizations();
   this->NumberOfWarpedVertices = internals.Solver.GetEditor().GetRegion().GetNumberOfVertices();
   return ok;
@@ -306,11 +309,11 @@ bool vtkLaplacianLandmarkWarp::Solve(vtkPoints* targets)
   vtkInternals& internals = *this->Internals;
   le::PointTargets points;
   points.Exact = this->ExactFit != 0;
-  if (!this->Fail(internals.Binder.Targets(targets, internals.Surface, points)))
+  if (!this->Check(internals.Binder.Targets(targets, internals.Surface, points)))
   {
     return false;
   }
-  if (!this->Fail(internals.Solver.Solve({}, &points)))
+  if (!this->Check(internals.Solver.Solve({}, &points)))
   {
     return false;
   }

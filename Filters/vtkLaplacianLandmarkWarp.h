@@ -232,7 +232,8 @@ private:
   bool Solve(vtkPoints* targets);
   void WriteOutput(vtkPolyData* input, vtkPolyData* output, vtkPoints* targets);
   vtkLaplacianSolverOptions SolverOptions() const;
-  bool Fail(const std::string& message);
+  // Reports a non-empty error (and sets the error code); true when there is none.
+  bool Check(const std::string& error);
 
   vtkPoints* SourceLandmarks = nullptr;
   vtkPoints* TargetLandmarks = nullptr;

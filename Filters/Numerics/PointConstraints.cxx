@@ -124,18 +124,17 @@ int PointConstraints::Fit(const std::function<Positions(const Positions&)>& solv
   }
   // A residual's response (S B^T r), solved at unit size: as a difference of two solves, a
   // tiny one would lose its digits to the solution's.
-  auto respond = [&](const Positions& r) {
-    const double size = r.cwiseAbs().maxCoeff();
+  auto respond = [&](const Positions& r) -> Positions {
     ++rounds;
-    return Positions(size > 0.0 ? Positions((solve(effective + r / size) - base) * size)
-                                : Positions::Zero(base.rows(), base.cols()));
+    const double size = r.cwiseAbs().maxCoeff(); // not zero: the points still miss
+    return (solve(effective + r / size) - base) * size;
   };
   Positions response = respond(residual); // of the residual
   Positions pulled = this->Evaluate(response); // A r
   Positions direction = residual, directionResponse = response, directionPulled = pulled;
   double product = (residual.array() * pulled.array()).sum(); // r . A r
   double squaredMiss = residual.squaredNorm();
-  while (miss > targets.Tolerance && rounds < targets.MaximumRounds && product > 0.0)
+  while (rounds < targets.MaximumRounds && product > 0.0)
   {
     const double step = product / directionPulled.squaredNorm();
     correction += step * direction;
@@ -145,9 +144,9 @@ int PointConstraints::Fit(const std::function<Positions(const Positions&)>& solv
     const Positions missed = wanted - this->Evaluate(solution);
     miss = largest(missed);
     squaredMiss = missed.squaredNorm();
-    if (!(squaredMiss < (1.0 - StallingDecrease) * before))
+    if (!(miss > targets.Tolerance) || !(squaredMiss < (1.0 - StallingDecrease) * before))
     {
-      break; // the miss left is what the points cannot all meet
+      break; // met, or the miss left is what the points cannot all meet
     }
     response = respond(residual);
     pulled = this->Evaluate(response);

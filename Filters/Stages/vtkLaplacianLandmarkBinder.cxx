@@ -79,8 +79,8 @@ std::string vtkLaplacianLandmarkBinder::Update(vtkPoints* sources,
 {
   rebound = false;
   const le::SurfaceMesh& mesh = *surface.GetMesh();
-  if (this->Points && this->BoundMesh == &mesh && this->BoundSources == sources &&
-    this->BoundTime == sources->GetMTime())
+  if (this->Points && this->BoundMesh == surface.GetMesh() && this->BoundSources == sources &&
+    this->BoundTime == sources->GetMTime() && this->BoundDistance == maximumDistance)
   {
     return {};
   }
@@ -140,9 +140,10 @@ std::string vtkLaplacianLandmarkBinder::Update(vtkPoints* sources,
   }
   this->Points = points;
   ++this->Version;
-  this->BoundMesh = &mesh;
+  this->BoundMesh = surface.GetMesh();
   this->BoundSources = sources;
   this->BoundTime = sources->GetMTime();
+  this->BoundDistance = maximumDistance;
   rebound = true;
   return {};
 }

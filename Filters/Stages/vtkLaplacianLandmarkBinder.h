@@ -21,6 +21,10 @@
 #include <string>
 #include <vector>
 
+namespace LaplacianEditing
+{
+class SurfaceMesh;
+}
 class vtkDoubleArray;
 class vtkLaplacianSurfaceAdapter;
 class vtkPoints;
@@ -65,10 +69,12 @@ private:
   std::vector<vtkIdType> CornerPoints;
   std::vector<double> Distances;
   std::uint64_t Version = 0;
-  // What the binding was made from.
-  const void* BoundMesh = nullptr;
+  // What the binding was made from; the mesh is held, so that a new one is never mistaken for
+  // it at the same address.
+  std::shared_ptr<const LaplacianEditing::SurfaceMesh> BoundMesh;
   vtkPoints* BoundSources = nullptr;
   vtkMTimeType BoundTime = 0;
+  double BoundDistance = 0.0;
 };
 
 #endif

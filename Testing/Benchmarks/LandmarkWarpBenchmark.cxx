@@ -4,16 +4,16 @@
 //
 //   LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]
 //     [--landmarks 100,300,1000,10000] [--tps-max N] [--tps-basis r2logr,r]
-//     [--modes arap,none,explicit,implicit] [--drags N]
+//     [--modes arap,none,explicit,implicit] [--bending W] [--drags N]
 //
 // Landmarks are random points on the surface (inside triangles), their targets the known
 // motion of them. For each method: the root-mean-square distance of every vertex from the true
 // shape and the largest drift of the part that should stay, both in fractions of the diagonal,
 // and the seconds the warp took (a fresh filter: binding, factorization and solve). TPS runs up
 // to --tps-max landmarks (1000; its time grows with the cube of the count), with VTK's default
-// kernel (r2logr) or the 3D one (r). After the largest
-// count, --drags (20) updates move one landmark with the factorization reused (Dragging on):
-// the median seconds an update and the factorizations in all.
+// kernel (r2logr) or the 3D one (r). --bending sets the warp's BendingWeight (its default,
+// 100). After the largest count, --drags (20) updates move one landmark with the factorization
+// reused (Dragging on): the median seconds an update and the factorizations in all.
 #include "KnownWarps.h"
 
 #include "vtkLaplacianLandmarkWarp.h"
@@ -150,13 +150,17 @@ void RunThinPlateSpline(
 }
 
 vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, vtkPoints* sources,
-  vtkPoints* targets, const std::string& mode)
+  vtkPoints* targets, const std::string& mode, double bending)
 {
   auto filter = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
   filter->SetInputData(warp.Mesh);
   filter->SetSourceLandmarks(sources);
   filter->SetTargetLandmarks(targets);
   filter->SetRotationMode(ModeNamed(mode));
+  if (bending >= 0.0)
+  {
+    filter->SetBendingWeight(bending);
+  }
   const auto start = Clock::now();
   filter->Update();
   const double seconds = SecondsSince(start);
@@ -206,7 +210,8 @@ int main(int argc, char* argv[])
   {
     std::cout << "usage: LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]\n"
                  "  [--landmarks 100,300,1000,10000] [--tps-max N] "
-                 "[--tps-basis r2logr,r] [--modes arap,none,explicit,implicit] [--drags N]\n";
+                 "[--tps-basis r2logr,r] [--modes arap,none,explicit,implicit] [--bending W] "
+                 "[--drags N]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string dataDir = argv[1];
@@ -214,6 +219,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> counts = { "100", "300", "1000", "10000" };
   vtkIdType tpsMax = 1000;
   int drags = 20;
+  double bending = -1.0; // the filter's default
   for (int a = 2; a + 1 < argc; a += 2)
   {
     const std::string option = argv[a], value = argv[a + 1];
@@ -236,6 +242,10 @@ int main(int argc, char* argv[])
     else if (option == "--tps-basis")
     {
       bases = value;
+    }
+    else if (option == "--bending")
+    {
+      bending = std::stod(value);
     }
     else if (option == "--drags")
     {
@@ -274,7 +284,7 @@ int main(int argc, char* argv[])
       }
       for (const auto& mode : Split(modes))
       {
-        last = RunWarp(warp, sources, targets, mode);
+        last = RunWarp(warp, sources, targets, mode, bending);
         lastTargets = targets;
       }
     }

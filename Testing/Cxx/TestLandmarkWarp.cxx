@@ -48,17 +48,20 @@ vtkSmartPointer<vtkLaplacianLandmarkWarp> Warp(vtkPolyData* mesh, vtkPoints* sou
   return warp;
 }
 
-// A bend about the z axis through `pivot`, by `perUnit` radians per unit of height (y).
-std::function<void(const double*, double*)> Bend(const double pivot[3], double perUnit)
+// The points bent about the z axis through the middle of the mesh's base, by `perUnit`
+// radians per unit of height (y).
+vtkSmartPointer<vtkPoints> Bent(vtkPolyData* mesh, vtkPoints* points, double perUnit)
 {
-  const std::array<double, 3> center = { pivot[0], pivot[1], pivot[2] };
-  return [center, perUnit](const double* p, double* q) {
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const std::array<double, 3> center = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
+  return Moved(points, [center, perUnit](const double* p, double* q) {
     const double angle = perUnit * (p[1] - center[1]);
     const double x = p[0] - center[0], y = p[1] - center[1];
     q[0] = center[0] + std::cos(angle) * x - std::sin(angle) * y;
     q[1] = center[1] + std::sin(angle) * x + std::cos(angle) * y;
     q[2] = p[2];
-  };
+  });
 }
 
 // Where each landmark ended, found independently: its nearest point on the input (cell and
@@ -139,10 +142,7 @@ TEST(LandmarkWarp, AnExactFitMeetsEveryTarget)
 {
   auto bunny = Load("stanford-bunny.obj");
   auto sources = SurfacePoints(bunny, 300);
-  double bounds[6];
-  bunny->GetBounds(bounds);
-  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
-  auto targets = Moved(sources, Bend(pivot, 4.0));
+  auto targets = Bent(bunny, sources, 4.0);
   for (int mode = vtkLaplacianLandmarkWarp::ROTATION_NONE;
        mode <= vtkLaplacianLandmarkWarp::ROTATION_AS_RIGID_AS_POSSIBLE; ++mode)
   {
@@ -165,10 +165,7 @@ TEST(LandmarkWarp, ASoftFitPullsAsItsWeightSays)
 {
   auto bunny = Load("stanford-bunny.obj");
   auto sources = SurfacePoints(bunny, 100);
-  double bounds[6];
-  bunny->GetBounds(bounds);
-  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
-  auto targets = Moved(sources, Bend(pivot, 4.0));
+  auto targets = Bent(bunny, sources, 4.0);
   double misses[2];
   const double weights[2] = { 0.1, 10.0 };
   for (int k = 0; k < 2; ++k)
@@ -253,10 +250,7 @@ TEST(LandmarkWarp, LandmarksFromAPointSetOnPortOne)
 {
   auto bunny = Load("stanford-bunny.obj");
   auto sources = SurfacePoints(bunny, 150);
-  double bounds[6];
-  bunny->GetBounds(bounds);
-  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
-  auto targets = Moved(sources, Bend(pivot, 3.0));
+  auto targets = Bent(bunny, sources, 3.0);
   auto byPoints = Warp(bunny, sources, targets);
   byPoints->Update();
 
@@ -292,10 +286,7 @@ TEST(LandmarkWarp, PointAndCellDataPassThrough)
   ids->Update();
   auto* input = vtkPolyData::SafeDownCast(ids->GetOutput());
   auto sources = SurfacePoints(input, 50);
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double pivot[3] = { 0.5 * (bounds[0] + bounds[1]), bounds[2], 0.0 };
-  auto warp = Warp(input, sources, Moved(sources, Bend(pivot, 2.0)));
+  auto warp = Warp(input, sources, Bent(input, sources, 2.0));
   warp->Update();
   vtkPolyData* output = warp->GetOutput();
   ASSERT_NE(output->GetPointData()->GetArray("PointIds"), nullptr);
@@ -328,6 +319,11 @@ TEST(LandmarkWarp, FarLandmarksWarnOrFail)
     EXPECT_NE(warnings.Messages.find("farther from the surface than BindingTolerance"), std::string::npos);
     EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::NoError);
     EXPECT_LE(MaxPointDistance(warp->GetOutput(), sphere), 1e-12 * diagonal);
+    // The same landmarks, a stricter limit: now on no component.
+    ErrorCatcher errors(warp);
+    warp->SetMaximumBindingDistance(0.02);
+    warp->Update();
+    EXPECT_NE(errors.Messages.find("Source landmark 0 lies on no component"), std::string::npos);
   }
   auto sources = landmarksAt(0.5 + 0.2 * diagonal); // on no component
   auto warp = Warp(sphere, sources, sources);
