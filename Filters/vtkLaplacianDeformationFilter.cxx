@@ -1,14 +1,10 @@
 #include "vtkLaplacianDeformationFilter.h"
 
-#include "vtkLaplacianDragPreview.h"
-#include "vtkLaplacianEditSolver.h"
-#include "vtkLaplacianHandleMaps.h"
-#include "vtkLaplacianNormalRefresher.h"
-#include "vtkLaplacianOutputWriter.h"
-#include "vtkLaplacianPieceEdit.h"
-#include "vtkLaplacianRegionSelector.h"
-#include "vtkLaplacianRestShape.h"
-#include "vtkLaplacianSurfaceAdapter.h"
+#include "EditPipeline.h"
+#include "HandleMotion.h"
+#include "HandleSource.h"
+#include "RestShape.h"
+#include "SparseCholesky.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -24,11 +20,11 @@
 #include "vtkTransform.h"
 
 #include <algorithm>
-#include <chrono>
 #include <initializer_list>
 #include <string>
 
 namespace le = LaplacianEditing;
+namespace lep = LaplacianEditing::Pipeline;
 
 vtkStandardNewMacro(vtkLaplacianDeformationFilter);
 
@@ -65,39 +61,35 @@ static_assert(static_cast<int>(le::VertexRole::Fixed) == vtkLaplacianDeformation
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 const char* EnumName(int value, std::initializer_list<const char*> names)
 {
   return value >= 0 && value < static_cast<int>(names.size()) ? names.begin()[value] : "?";
 }
 }
 
-// The stages of an edit, in the order RequestData runs them.
+// The filter's own state: the rest shape (commits), where its edits come from (the handle and
+// its region), and the pipeline that runs them.
 struct vtkLaplacianDeformationFilter::vtkInternals
 {
-  vtkLaplacianRestShape Rest;
-  vtkLaplacianRegionSelector Region;
-  vtkLaplacianSurfaceAdapter Surface;
-  vtkLaplacianEditSolver Solver;
-  vtkLaplacianHandleMaps Handles;
-  vtkLaplacianNormalRefresher Normals;
-  vtkLaplacianOutputWriter Writer;
-  vtkLaplacianDragPreview Preview;
+  explicit vtkInternals(vtkLaplacianDeformationFilter* filter)
+    : Source(filter)
+    , Pipeline(filter, [filter](unsigned long code) { filter->SetErrorCode(code); })
+  {
+  }
+
+  lep::RestShape Rest;
+  lep::HandleSource Source;
+  lep::EditPipeline Pipeline;
   double Diagonal = 0.0; // of the rest surface's bounding box
-  // Whether the last EditSurface solved an edit, and when; whether a preview solved since.
-  bool Edited = false;
+  // When the last update solved an edit (a preview needs one of the current properties).
   vtkTimeStamp EditTime;
-  bool Previewed = false;
+  // GetHandleGroupCenter's answer for callers that take no output arguments; (0, 0, 0) for a
+  // group the last region did not have.
+  double GroupCenter[3] = { 0.0, 0.0, 0.0 };
 };
 
 vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
-  : Internals(new vtkInternals)
+  : Internals(new vtkInternals(this))
 {
   if (!IsCholmodAvailable())
   {
@@ -106,7 +98,6 @@ vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
   this->SetNumberOfInputPorts(2);
-  this->Internals->Writer.SetFilter(this);
 }
 
 vtkLaplacianDeformationFilter::~vtkLaplacianDeformationFilter() = default;
@@ -139,7 +130,7 @@ void vtkLaplacianDeformationFilter::SetHandleTransform(int group, vtkLinearTrans
     vtkErrorMacro(<< "handle group " << group << " is negative");
     return;
   }
-  if (this->Internals->Handles.SetTransform(group, transform))
+  if (this->Internals->Source.GetHandles().SetTransform(group, transform))
   {
     this->Modified();
   }
@@ -147,17 +138,17 @@ void vtkLaplacianDeformationFilter::SetHandleTransform(int group, vtkLinearTrans
 
 vtkLinearTransform* vtkLaplacianDeformationFilter::GetHandleTransform(int group)
 {
-  return this->Internals->Handles.GetTransform(group);
+  return this->Internals->Source.GetHandles().GetTransform(group);
 }
 
 int vtkLaplacianDeformationFilter::GetNumberOfHandleTransforms()
 {
-  return this->Internals->Handles.GetNumberOfTransforms();
+  return this->Internals->Source.GetHandles().GetNumberOfTransforms();
 }
 
 void vtkLaplacianDeformationFilter::RemoveAllHandleTransforms()
 {
-  if (this->Internals->Handles.RemoveAllTransforms())
+  if (this->Internals->Source.GetHandles().RemoveAllTransforms())
   {
     this->Modified();
   }
@@ -172,7 +163,7 @@ void vtkLaplacianDeformationFilter::SetHandleGroupMotion(vtkIdType group, double
                   << "1 and above (group 0 moves with HandleTranslation and HandleRotation)");
     return;
   }
-  if (this->Internals->Handles.SetMotion(static_cast<int>(group),
+  if (this->Internals->Source.GetHandles().SetMotion(static_cast<int>(group),
         { translationX, translationY, translationZ, rotationX, rotationY, rotationZ }))
   {
     this->Modified();
@@ -181,17 +172,17 @@ void vtkLaplacianDeformationFilter::SetHandleGroupMotion(vtkIdType group, double
 
 bool vtkLaplacianDeformationFilter::GetHandleGroupMotion(int group, double motion[6])
 {
-  return this->Internals->Handles.GetMotion(group, motion);
+  return this->Internals->Source.GetHandles().GetMotion(group, motion);
 }
 
 int vtkLaplacianDeformationFilter::GetNumberOfHandleGroupMotions()
 {
-  return this->Internals->Handles.GetNumberOfMotions();
+  return this->Internals->Source.GetHandles().GetNumberOfMotions();
 }
 
 void vtkLaplacianDeformationFilter::RemoveAllHandleGroupMotions()
 {
-  if (this->Internals->Handles.RemoveAllMotions())
+  if (this->Internals->Source.GetHandles().RemoveAllMotions())
   {
     this->Modified();
   }
@@ -199,7 +190,8 @@ void vtkLaplacianDeformationFilter::RemoveAllHandleGroupMotions()
 
 vtkMTimeType vtkLaplacianDeformationFilter::GetMTime()
 {
-  return std::max(this->Superclass::GetMTime(), this->Internals->Handles.GetTransformsMTime());
+  return std::max(
+    this->Superclass::GetMTime(), this->Internals->Source.GetHandles().GetTransformsMTime());
 }
 
 void vtkLaplacianDeformationFilter::SetDragging(vtkTypeBool dragging)
@@ -209,12 +201,9 @@ void vtkLaplacianDeformationFilter::SetDragging(vtkTypeBool dragging)
     return;
   }
   this->Dragging = dragging;
-  this->SettleAfterDrag = !dragging;
-  if (!dragging && !this->Internals->Previewed)
+  if (this->Internals->Pipeline.SetDragging(dragging != 0))
   {
-    // The next update settles the pose the drag left. A previewed drag left the output as it
-    // was: the update that applies its motion settles it.
-    this->Modified();
+    this->Modified(); // the next update settles the pose the drag left
   }
 }
 
@@ -227,73 +216,30 @@ int vtkLaplacianDeformationFilter::RequestData(
 
 void vtkLaplacianDeformationFilter::EditSurface(vtkPolyData* input, vtkPolyData* output)
 {
-  this->ResetStatistics();
-  this->RunStages(input, output);
-  const vtkLaplacianEditSolver::Facts& facts = this->Internals->Solver.GetFacts();
-  this->SetupTime = facts.SetupTime;
-  this->AnalysisTime = facts.AnalysisTime;
-  this->FactorizationTime = facts.FactorizationTime;
-  this->SolveTime = facts.SolveTime;
-  this->NumberOfARAPIterations = facts.NumberOfARAPIterations;
-  this->ARAPEnergy = facts.ARAPEnergy;
-}
-
-void vtkLaplacianDeformationFilter::RunStages(vtkPolyData* input, vtkPolyData* output)
-{
-  // Each stage is skipped when its cache holds; progress after each that may take seconds
-  // (graph, region and its factor, rotation model and its factor).
-  this->Internals->Edited = false;
-  this->Internals->Previewed = false;
-  output->ShallowCopy(input);
+  vtkInternals& internals = *this->Internals;
+  internals.Pipeline.BeginUpdate();
+  if (output)
+  {
+    output->ShallowCopy(input);
+  }
   if (!this->CheckInput(input))
   {
     return;
   }
-  vtkPolyData* rest = this->Internals->Rest.Get(input);
-  output->ShallowCopy(rest);
-  this->UpdateProgress(0.1);
-  if (!this->UpdateSurfaceGraph(rest) || this->GetAbortExecute())
+  vtkPolyData* rest = internals.Rest.Get(input);
+  if (output)
   {
-    return;
+    output->ShallowCopy(rest);
   }
-  this->UpdateProgress(0.3);
-  if (!this->UpdateRegion(rest) || this->GetAbortExecute())
+  internals.Diagonal = rest->GetLength();
+  internals.Source.Parameters = this->RegionParameters();
+  std::copy_n(this->HandleRotation, 3, internals.Source.Rotation);
+  std::copy_n(this->HandleTranslation, 3, internals.Source.Translation);
+  if (internals.Pipeline.Run(rest, output, internals.Source, this->Settings(),
+        this->MergeCoincidentPoints != 0, this->GenerateEditRoles != 0, this->RoleColors != 0))
   {
-    return;
+    internals.EditTime.Modified();
   }
-  this->UpdateProgress(0.6);
-  if (!this->UpdateRotationModel() || this->GetAbortExecute())
-  {
-    return;
-  }
-  this->UpdateProgress(0.9);
-  if (this->Solve(this->HandleTranslation, this->HandleRotation))
-  {
-    this->WriteOutput(rest, output);
-    this->Internals->EditTime.Modified();
-  }
-  this->UpdateProgress(1.0);
-}
-
-bool vtkLaplacianDeformationFilter::Fail(const std::string& message)
-{
-  vtkErrorMacro(<< message);
-  this->SetErrorCode(vtkErrorCode::UserError);
-  return false;
-}
-
-bool vtkLaplacianDeformationFilter::Check(const std::string& error)
-{
-  return error.empty() || this->Fail(error);
-}
-
-void vtkLaplacianDeformationFilter::ResetStatistics()
-{
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->NumberOfROIVertices = 0;
-  this->NumberOfHandleVertices = 0;
-  this->TopologyTime = 0.0;
-  this->Internals->Solver.ResetFacts();
 }
 
 double vtkLaplacianDeformationFilter::AbsoluteRadius(double radius) const
@@ -310,11 +256,11 @@ double vtkLaplacianDeformationFilter::GetRadiusScale()
   return this->RadiusUnits == RADIUS_DIAGONAL_FRACTION && diagonal > 0.0 ? diagonal : 1.0;
 }
 
-vtkLaplacianRegionSelector::Parameters vtkLaplacianDeformationFilter::RegionParameters() const
+lep::RegionParameters vtkLaplacianDeformationFilter::RegionParameters() const
 {
-  vtkLaplacianRegionSelector::Parameters parameters;
+  lep::RegionParameters parameters;
   parameters.FromArray = this->SelectionMode == SELECTION_ARRAY;
-  std::copy(this->HandleCenter, this->HandleCenter + 3, parameters.HandleCenter);
+  std::copy_n(this->HandleCenter, 3, parameters.HandleCenter);
   parameters.HandleRadius = this->AbsoluteRadius(this->HandleRadius);
   parameters.ROIRadius = this->AbsoluteRadius(this->ROIRadius);
   parameters.AnchorPadding = this->AnchorPadding;
@@ -324,243 +270,102 @@ vtkLaplacianRegionSelector::Parameters vtkLaplacianDeformationFilter::RegionPara
   return parameters;
 }
 
-vtkLaplacianEditSolver::Options vtkLaplacianDeformationFilter::SolverOptions(bool dragStep)
+lep::SolverSettings vtkLaplacianDeformationFilter::Settings()
 {
-  vtkLaplacianEditSolver::Options options;
-  options.LaplacianWeights = this->LaplacianWeights;
-  options.OperatorOrder = this->OperatorOrder;
-  options.HandleWeight = this->HandleWeight;
-  options.AnchorWeight = this->AnchorWeight;
-  options.Solver = this->Solver;
-  options.Ordering = this->Ordering;
-  options.MaximumFactorMemory = this->MaximumFactorMemory;
-  options.Distributed = this->GetDistributedSolver();
-  options.RotationMode = this->RotationMode;
-  options.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
-    ? this->AbsoluteRadius(this->NormalSmoothingRadius) * this->Internals->Surface.GetScale()
-    : 0.0;
-  options.NumberOfIterations = this->NumberOfIterations;
-  options.PreserveDetailScale = this->PreserveDetailScale != 0;
-  options.ImplicitFormulation = this->ImplicitFormulation;
-  // A drag caps each update's iterations; the update after it settles the shape in full.
-  options.ARAPIterations = this->Dragging || dragStep
-    ? std::min(this->DragARAPIterations, this->ARAPIterations)
-    : this->ARAPIterations;
-  options.Convergence = this->SettleAfterDrag ? 0.0 : this->Convergence;
-  options.Acceleration = this->Acceleration != 0;
-  options.Extrapolation = this->Extrapolation != 0;
-  return options;
+  lep::SolverSettings settings;
+  settings.LaplacianWeights = this->LaplacianWeights;
+  settings.OperatorOrder = this->OperatorOrder;
+  settings.HandleWeight = this->HandleWeight;
+  settings.AnchorWeight = this->AnchorWeight;
+  settings.Solver = this->Solver;
+  settings.Ordering = this->Ordering;
+  settings.MaximumFactorMemory = this->MaximumFactorMemory;
+  settings.Distributed = this->GetDistributedSolver();
+  settings.RotationMode = this->RotationMode;
+  settings.NormalSmoothingRadius = this->RegionParameters().NormalSmoothingRadius;
+  settings.NumberOfIterations = this->NumberOfIterations;
+  settings.PreserveDetailScale = this->PreserveDetailScale != 0;
+  settings.ImplicitFormulation = this->ImplicitFormulation;
+  settings.ARAPIterations = this->ARAPIterations;
+  settings.Convergence = this->Convergence;
+  settings.Acceleration = this->Acceleration != 0;
+  settings.Extrapolation = this->Extrapolation != 0;
+  settings.Dragging = this->Dragging != 0;
+  settings.DragARAPIterations = this->DragARAPIterations;
+  return settings;
 }
 
 bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
 {
-  if (!this->Check(vtkLaplacianSurfaceAdapter::CheckSurface(input)))
+  lep::EditPipeline& pipeline = this->Internals->Pipeline;
+  if (!pipeline.Check(lep::SurfaceAdapter::CheckSurface(input)))
   {
     return false;
   }
   auto* selection = vtkSelection::SafeDownCast(this->GetInputDataObject(1, 0));
   if (selection && this->ROIRadius <= 0.0)
   {
-    return this->Fail("ROIRadius must be positive: with a selection on input port 1, the ROI is "
-                      "every point within ROIRadius of the selected handle.");
+    return pipeline.Check("ROIRadius must be positive: with a selection on input port 1, the "
+                          "ROI is every point within ROIRadius of the selected handle.");
   }
   if (!selection && this->SelectionMode == SELECTION_GEODESIC &&
     !(this->HandleRadius > 0.0 && this->ROIRadius > 0.0))
   {
-    return this->Fail("HandleRadius and ROIRadius must be positive.");
+    return pipeline.Check("HandleRadius and ROIRadius must be positive.");
   }
   const bool fromArray = this->SelectionMode == SELECTION_ARRAY;
   vtkDataArray* array = !selection && fromArray ? this->GetInputArrayToProcess(0, input) : nullptr;
-  return this->Check(this->Internals->Region.SelectLabels(input, selection, fromArray, array,
-    [this](vtkPolyData* surface, vtkSelection* handle) { return this->SelectionLabels(surface, handle); }));
+  return pipeline.Check(this->Internals->Source.GetSelector().SelectLabels(input, selection,
+    fromArray, array, [this](vtkPolyData* surface, vtkSelection* handle) {
+      return this->SelectionLabels(surface, handle);
+    }));
 }
 
 vtkSmartPointer<vtkIntArray> vtkLaplacianDeformationFilter::SelectionLabels(
   vtkPolyData* input, vtkSelection* selection)
 {
-  return vtkLaplacianRegionSelector::LabelSelection(input, selection, 0);
+  return lep::RegionSelector::LabelSelection(input, selection, 0);
 }
 
-bool vtkLaplacianDeformationFilter::UpdateSurfaceGraph(vtkPolyData* rest)
+void vtkLaplacianDeformationFilter::WriteEdit(
+  vtkPolyData* rest, vtkPolyData* output, const lep::OutputEdit* edit)
 {
-  // The surface graph depends on the rest surface and on the part of it the edit can reach.
-  vtkInternals& internals = *this->Internals;
-  internals.Diagonal = rest->GetLength();
-  const auto& reach = internals.Region.ComputeReach(rest, this->RegionParameters());
-  const Clock::time_point start = Clock::now();
-  bool rebuilt = false;
-  const std::string error =
-    internals.Surface.Update(rest, this->MergeCoincidentPoints != 0, reach, rebuilt);
-  if (rebuilt)
-  {
-    internals.Solver.SetMesh(internals.Surface.GetMesh());
-  }
-  if (!this->Check(error))
-  {
-    return false;
-  }
-  if (rebuilt)
-  {
-    this->NumberOfSurfaceVertices = internals.Surface.GetMesh()->GetNumberOfVertices();
-    this->TopologyTime = SecondsSince(start);
-  }
-  return true;
+  this->Internals->Pipeline.Write(
+    rest, output, edit, this->GenerateEditRoles != 0, this->RoleColors != 0);
 }
 
-bool vtkLaplacianDeformationFilter::UpdateRegion(vtkPolyData* rest)
+const lep::EditPipeline& vtkLaplacianDeformationFilter::GetEditPipeline() const
 {
-  vtkInternals& internals = *this->Internals;
-  const vtkLaplacianSurfaceAdapter& surface = internals.Surface;
-  const vtkLaplacianRegionSelector::Parameters parameters = this->RegionParameters();
-  const le::RegionRequest request = internals.Region.Request(rest, surface, parameters);
-  vtkDataArray* labels = internals.Region.GetLabels();
-  unsigned rebuilt = le::RebuiltNothing;
-  const std::string error = internals.Solver.UpdateRegion(
-    request, [&] { return surface.VertexLabels(labels); }, this->SolverOptions(), rebuilt);
-  this->UpdateFactorizationCounts();
-  if (!this->Check(error))
-  {
-    return false;
-  }
-  const le::EditRegion& region = internals.Solver.GetEditor().GetRegion();
-  if (rebuilt & le::RebuiltRegion)
-  {
-    internals.Region.Warn(this, request, region, surface, parameters, internals.Diagonal);
-  }
-  if (rebuilt != le::RebuiltNothing)
-  {
-    internals.Surface.IndexRegion(region);
-    internals.Handles.FindGroupCenters(region, surface);
-    internals.Normals.Index(rest, surface);
-  }
-  return true;
+  return this->Internals->Pipeline;
 }
 
-bool vtkLaplacianDeformationFilter::UpdateRotationModel()
-{
-  vtkInternals& internals = *this->Internals;
-  const vtkLaplacianEditSolver::Options options = this->SolverOptions();
-  this->SettleAfterDrag = false;
-  const std::string error = internals.Solver.UpdateRotationModel(options, this);
-  this->UpdateFactorizationCounts();
-  this->FactorMemory = internals.Solver.GetFactorMemory();
-  this->FactoredAcrossProcesses = internals.Solver.GetEditor().IsFactorDistributed();
-  return this->Check(error);
-}
-
-void vtkLaplacianDeformationFilter::UpdateFactorizationCounts()
-{
-  const le::LaplacianEditor& editor = this->Internals->Solver.GetEditor();
-  this->NumberOfFactorizations = editor.GetNumberOfFactorizations();
-  this->NumberOfFactorizationAttempts = editor.GetNumberOfFactorizationAttempts();
-}
-
-bool vtkLaplacianDeformationFilter::Solve(const double translation[3], const double rotation[3])
-{
-  vtkInternals& internals = *this->Internals;
-  const int groups = internals.Solver.GetEditor().GetRegion().NumberOfHandleGroups;
-  if (!this->Check(internals.Solver.Solve(
-        internals.Handles.Maps(groups, internals.Surface, this->HandleCenter, rotation, translation))))
-  {
-    return false;
-  }
-  internals.Edited = true;
-  const le::EditRegion& region = internals.Solver.GetEditor().GetRegion();
-  this->NumberOfROIVertices = region.GetNumberOfVertices();
-  this->NumberOfHandleVertices = static_cast<int>(
-    std::count(region.Roles.begin(), region.Roles.end(), le::VertexRole::Handle));
-  return true;
-}
-
-vtkLaplacianOutputEdit vtkLaplacianDeformationFilter::SolvedEdit() const
-{
-  const vtkInternals& internals = *this->Internals;
-  return internals.Surface.GetEdit(
-    internals.Solver.GetSolution(), &internals.Normals, internals.Solver.GetModelVersion());
-}
-
-void vtkLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
-{
-  vtkInternals& internals = *this->Internals;
-  const Clock::time_point start = Clock::now();
-  const vtkLaplacianOutputEdit edit = this->SolvedEdit();
-  this->WriteEdit(rest, output, &edit);
-  internals.Solver.GetFacts().SolveTime += SecondsSince(start);
-}
-
-bool vtkLaplacianDeformationFilter::PreviewHandleMotion(
+bool vtkLaplacianDeformationFilter::SolveDragStep(
   const double translation[3], const double rotation[3])
 {
   // Only the handle's motion may differ from the last update's: no property, transform or
   // input content changed since.
   vtkInternals& internals = *this->Internals;
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
-  if (!internals.Edited || !input || this->GetMTime() > internals.EditTime ||
-    vtkLaplacianSurfaceAdapter::GetContentTime(input) > internals.EditTime)
+  if (!internals.Pipeline.HasSolved() || !input || this->GetMTime() > internals.EditTime ||
+    lep::SurfaceAdapter::GetContentTime(input) > internals.EditTime)
   {
     return false;
   }
-  // A drag step, as during a drag with Dragging on; the region and its factors are the
-  // update's, so nothing is rebuilt.
-  if (!this->Check(internals.Solver.UpdateRotationModel(this->SolverOptions(true), this)) ||
-    !this->Solve(translation, rotation))
-  {
-    return false;
-  }
-  const vtkLaplacianOutputEdit edit = this->SolvedEdit();
-  if (!internals.Preview.IsBuiltFor(edit.RegionVersion))
-  {
-    internals.Preview.Build(internals.Rest.Get(input), this->GetOutput(), edit);
-  }
-  internals.Preview.Write(edit);
-  internals.Previewed = true;
-  return true;
+  // On the update's region and factors: nothing is rebuilt.
+  std::copy_n(translation, 3, internals.Source.Translation);
+  std::copy_n(rotation, 3, internals.Source.Rotation);
+  return internals.Pipeline.SolveDragStep(internals.Source, this->Settings());
 }
 
-bool vtkLaplacianDeformationFilter::PreviewHandleMotion(
-  double tx, double ty, double tz, double rx, double ry, double rz)
+vtkPolyData* vtkLaplacianDeformationFilter::GetRestSurface()
 {
-  const double translation[3] = { tx, ty, tz }, rotation[3] = { rx, ry, rz };
-  return this->PreviewHandleMotion(translation, rotation);
-}
-
-vtkPolyData* vtkLaplacianDeformationFilter::GetPreviewStillPart()
-{
-  return this->Internals->Preview.GetStillPart();
-}
-
-vtkPolyData* vtkLaplacianDeformationFilter::GetPreviewMovingPart()
-{
-  return this->Internals->Preview.GetMovingPart();
-}
-
-void vtkLaplacianDeformationFilter::ReleasePreview()
-{
-  this->Internals->Preview.Release();
-}
-
-void vtkLaplacianDeformationFilter::WriteEdit(
-  vtkPolyData* rest, vtkPolyData* output, const vtkLaplacianOutputEdit* edit)
-{
-  this->Internals->Writer.Write(
-    rest, output, edit, this->GenerateEditRoles != 0, this->RoleColors != 0);
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  return input ? this->Internals->Rest.Get(input) : nullptr;
 }
 
 vtkIdType vtkLaplacianDeformationFilter::GetNumberOfOutputCopies()
 {
-  return this->Internals->Writer.GetNumberOfCopies();
-}
-
-bool vtkLaplacianDeformationFilter::GetEditState(vtkLaplacianEditState& state) const
-{
-  const vtkInternals& internals = *this->Internals;
-  state.Surface = &internals.Surface;
-  state.Normals = &internals.Normals;
-  state.Editor = &internals.Solver.GetEditor();
-  state.Maps = &internals.Solver.GetMaps();
-  state.Solution = &internals.Solver.GetSolution();
-  state.ModelVersion = internals.Solver.GetModelVersion();
-  return internals.Edited;
+  return this->Internals->Pipeline.GetWriter().GetNumberOfCopies();
 }
 
 void vtkLaplacianDeformationFilter::CommitEdit()
@@ -579,8 +384,7 @@ void vtkLaplacianDeformationFilter::CommitEdit()
   }
   // The handle property transform moves HandleCenter along; the edit starts anew from there.
   double center[3];
-  vtkLaplacianHandleMaps::MotionTransform(
-    this->HandleCenter, this->HandleRotation, this->HandleTranslation)
+  lep::HandleMotion::Transform(this->HandleCenter, this->HandleRotation, this->HandleTranslation)
     ->TransformPoint(this->HandleCenter, center);
   this->Internals->Rest.Commit(output->GetPoints());
   if (!this->GetHandleTransform(0))
@@ -618,23 +422,100 @@ bool vtkLaplacianDeformationFilter::GetRestPoint(vtkIdType id, double point[3])
 
 bool vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group, double center[3])
 {
-  return this->Internals->Handles.GetGroupCenter(group, center);
+  const double* found = this->Internals->Source.GetHandles().GetGroupCenter(group);
+  if (found)
+  {
+    std::copy_n(found, 3, center);
+  }
+  return found != nullptr;
 }
 
 double* vtkLaplacianDeformationFilter::GetHandleGroupCenter(int group)
 {
-  if (!this->GetHandleGroupCenter(group, this->ReturnedGroupCenter))
+  double* center = this->Internals->GroupCenter;
+  const double* found = this->Internals->Source.GetHandles().GetGroupCenter(group);
+  std::fill_n(center, 3, 0.0);
+  if (found)
   {
-    std::fill_n(this->ReturnedGroupCenter, 3, 0.0);
+    std::copy_n(found, 3, center);
   }
-  return this->ReturnedGroupCenter;
+  return center;
 }
 
 int vtkLaplacianDeformationFilter::GetNumberOfHandleGroups()
 {
-  return this->Internals->Solver.GetEditor().GetRegion().NumberOfHandleGroups;
+  return this->Internals->Pipeline.GetEditor().GetRegion().NumberOfHandleGroups;
 }
 
+int vtkLaplacianDeformationFilter::GetNumberOfROIVertices()
+{
+  return this->Internals->Pipeline.GetFacts().NumberOfROIVertices;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfHandleVertices()
+{
+  return this->Internals->Pipeline.GetFacts().NumberOfHandleVertices;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfSurfaceVertices()
+{
+  return this->Internals->Pipeline.GetFacts().NumberOfSurfaceVertices;
+}
+
+double vtkLaplacianDeformationFilter::GetTopologyTime()
+{
+  return this->Internals->Pipeline.GetFacts().TopologyTime;
+}
+
+double vtkLaplacianDeformationFilter::GetSetupTime()
+{
+  return this->Internals->Pipeline.GetFacts().SetupTime;
+}
+
+double vtkLaplacianDeformationFilter::GetAnalysisTime()
+{
+  return this->Internals->Pipeline.GetFacts().AnalysisTime;
+}
+
+double vtkLaplacianDeformationFilter::GetFactorizationTime()
+{
+  return this->Internals->Pipeline.GetFacts().FactorizationTime;
+}
+
+double vtkLaplacianDeformationFilter::GetSolveTime()
+{
+  return this->Internals->Pipeline.GetFacts().SolveTime;
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfFactorizations()
+{
+  return this->Internals->Pipeline.GetEditor().GetNumberOfFactorizations();
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfFactorizationAttempts()
+{
+  return this->Internals->Pipeline.GetEditor().GetNumberOfFactorizationAttempts();
+}
+
+int vtkLaplacianDeformationFilter::GetNumberOfARAPIterations()
+{
+  return this->Internals->Pipeline.GetFacts().NumberOfARAPIterations;
+}
+
+double vtkLaplacianDeformationFilter::GetARAPEnergy()
+{
+  return this->Internals->Pipeline.GetFacts().ARAPEnergy;
+}
+
+double vtkLaplacianDeformationFilter::GetFactorMemory()
+{
+  return this->Internals->Pipeline.GetFactorMemory();
+}
+
+vtkTypeBool vtkLaplacianDeformationFilter::GetFactoredAcrossProcesses()
+{
+  return this->Internals->Pipeline.GetEditor().IsFactorDistributed();
+}
 
 void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
@@ -665,7 +546,7 @@ void vtkLaplacianDeformationFilter::PrintRegionProperties(ostream& os, vtkIndent
   os << indent << "DistanceMethod: "
      << EnumName(this->DistanceMethod, { "FastMarching", "EdgePaths" }) << "\n";
   os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
-  this->Internals->Handles.PrintSelf(os, indent);
+  this->Internals->Source.GetHandles().PrintSelf(os, indent);
   os << indent << "NumberOfCommits: " << this->Internals->Rest.GetNumberOfCommits() << "\n";
 }
 
@@ -695,7 +576,7 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
   os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB";
   if (this->MaximumFactorMemory <= 0.0)
   {
-    os << " (automatic: " << vtkLaplacianSurfaceAdapter::GetAutomaticFactorLimit() << " MB now)";
+    os << " (automatic: " << lep::SolverSettings::AutomaticFactorLimit() << " MB now)";
   }
   os << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
@@ -704,17 +585,17 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
 
 void vtkLaplacianDeformationFilter::PrintLastUpdate(ostream& os, vtkIndent next)
 {
-  os << next << "NumberOfROIVertices: " << this->NumberOfROIVertices << "\n";
-  os << next << "NumberOfHandleVertices: " << this->NumberOfHandleVertices << "\n";
-  os << next << "TopologyTime: " << this->TopologyTime << " s\n";
-  os << next << "SetupTime: " << this->SetupTime << " s (analysis " << this->AnalysisTime
-     << " s, factorization " << this->FactorizationTime << " s)\n";
-  os << next << "SolveTime: " << this->SolveTime << " s\n";
-  os << next << "NumberOfARAPIterations: " << this->NumberOfARAPIterations << "\n";
-  os << next << "ARAPEnergy: " << this->ARAPEnergy << "\n";
-  os << next << "NumberOfSurfaceVertices: " << this->NumberOfSurfaceVertices << "\n";
-  os << next << "FactorMemory: " << this->FactorMemory << " MB\n";
-  os << next << "FactoredAcrossProcesses: " << this->FactoredAcrossProcesses << "\n";
-  os << next << "NumberOfFactorizations: " << this->NumberOfFactorizations << " (attempted "
-     << this->NumberOfFactorizationAttempts << ")\n";
+  os << next << "NumberOfROIVertices: " << this->GetNumberOfROIVertices() << "\n";
+  os << next << "NumberOfHandleVertices: " << this->GetNumberOfHandleVertices() << "\n";
+  os << next << "TopologyTime: " << this->GetTopologyTime() << " s\n";
+  os << next << "SetupTime: " << this->GetSetupTime() << " s (analysis "
+     << this->GetAnalysisTime() << " s, factorization " << this->GetFactorizationTime() << " s)\n";
+  os << next << "SolveTime: " << this->GetSolveTime() << " s\n";
+  os << next << "NumberOfARAPIterations: " << this->GetNumberOfARAPIterations() << "\n";
+  os << next << "ARAPEnergy: " << this->GetARAPEnergy() << "\n";
+  os << next << "NumberOfSurfaceVertices: " << this->GetNumberOfSurfaceVertices() << "\n";
+  os << next << "FactorMemory: " << this->GetFactorMemory() << " MB\n";
+  os << next << "FactoredAcrossProcesses: " << this->GetFactoredAcrossProcesses() << "\n";
+  os << next << "NumberOfFactorizations: " << this->GetNumberOfFactorizations()
+     << " (attempted " << this->GetNumberOfFactorizationAttempts() << ")\n";
 }

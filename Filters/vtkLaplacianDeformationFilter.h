@@ -19,35 +19,39 @@
  * the filter reports an error, passes the input through and sets GetErrorCode() to
  * vtkErrorCode::UserError until an update succeeds. Documentation/filter.md has the guide.
  *
- * @sa vtkPLaplacianDeformationFilter vtkDeformationHandleWidget
+ * The properties come in groups: the handle, the region, the Laplacian system, the rotation
+ * mode and the settings of each mode, the solver, the output, commits, and the results of the
+ * last update.
+ *
+ * @sa vtkPLaplacianDeformationFilter vtkDeformationHandleWidget vtkLaplacianDragPreview
  */
 #ifndef vtkLaplacianDeformationFilter_h
 #define vtkLaplacianDeformationFilter_h
 
-#include "vtkCommand.h"               // for vtkCommand::UserEvent
-#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkCommand.h"                      // for vtkCommand::UserEvent
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
-#include <string> // for std::string
 
 class vtkAlgorithmOutput;
-class vtkDataArray;
+class vtkIntArray;
 class vtkLinearTransform;
-struct vtkLaplacianEditState;
-struct vtkLaplacianOutputEdit;
-struct vtkLaplacianRegionParameters;
-struct vtkLaplacianSolverOptions;
+class vtkSelection;
 namespace LaplacianEditing
 {
 class DistributedSolver;
+namespace Pipeline
+{
+class EditPipeline;
+struct OutputEdit;
+struct RegionParameters;
+struct SolverSettings;
 }
-class vtkIntArray;
-class vtkPoints;
-class vtkSelection;
+}
 
-class VTKLAPLACIANEDITING_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLaplacianDeformationFilter* New();
@@ -58,6 +62,16 @@ public:
   {
     SELECTION_GEODESIC = 0,
     SELECTION_ARRAY = 1
+  };
+  enum RadiusUnitsTypes
+  {
+    RADIUS_ABSOLUTE = 0,
+    RADIUS_DIAGONAL_FRACTION = 1
+  };
+  enum DistanceMethods
+  {
+    DISTANCE_FAST_MARCHING = 0,
+    DISTANCE_EDGE_PATHS = 1
   };
   enum LaplacianWeightTypes
   {
@@ -71,11 +85,23 @@ public:
     ROTATION_IMPLICIT = 2,
     ROTATION_AS_RIGID_AS_POSSIBLE = 3
   };
+  enum ImplicitFormulations
+  {
+    IMPLICIT_PER_EDGE = 0,
+    IMPLICIT_PAPER = 1
+  };
   enum Solvers
   {
     SOLVER_CHOLMOD = 0,
     SOLVER_SIMPLICIAL_LDLT = 1,
     SOLVER_MUMPS = 2
+  };
+  enum Orderings
+  {
+    ORDERING_AUTOMATIC = 0,
+    ORDERING_AMD = 1,
+    ORDERING_METIS = 2,
+    ORDERING_NESTED_DISSECTION = 3
   };
   enum EditRoles
   {
@@ -85,6 +111,88 @@ public:
     ROLE_HANDLE = 3
   };
 
+  /**
+   * @name Handle
+   * Where the handle is and how each handle group moves.
+   */
+  ///@{
+  /**
+   * Geodesic selection: the point the handle is centred on, in mesh coordinates; the handle
+   * sits on the surface vertex nearest it (a warning says when that vertex is farther away than
+   * the handle radius). It is also the pivot of HandleRotation. Default (0, 0, 0).
+   */
+  vtkSetVector3Macro(HandleCenter, double);
+  vtkGetVector3Macro(HandleCenter, double);
+
+  /**
+   * Handle group 0's translation, in mesh units, applied after HandleRotation: the simplest way
+   * to move the handle from scripts, Python, vedo and ParaView. Used when no transform object
+   * is set for group 0. Default (0, 0, 0).
+   */
+  vtkSetVector3Macro(HandleTranslation, double);
+  vtkGetVector3Macro(HandleTranslation, double);
+
+  /**
+   * Handle group 0's rotation: angles in degrees about x, then y, then z, about HandleCenter,
+   * applied before HandleTranslation. Used when no transform object is set for group 0.
+   * Default (0, 0, 0).
+   */
+  vtkSetVector3Macro(HandleRotation, double);
+  vtkGetVector3Macro(HandleRotation, double);
+
+  /**
+   * The transform of handle group 0, applied to the handle's rest positions. nullptr (the
+   * default) means HandleTranslation and HandleRotation. The filter's MTime includes the
+   * transforms' MTimes.
+   */
+  void SetHandleTransform(vtkLinearTransform* transform) { this->SetHandleTransform(0, transform); }
+  vtkLinearTransform* GetHandleTransform() { return this->GetHandleTransform(0); }
+
+  /**
+   * The transform of handle group `group` (array value 2 + group); nullptr for no motion.
+   */
+  void SetHandleTransform(int group, vtkLinearTransform* transform);
+  vtkLinearTransform* GetHandleTransform(int group);
+  /** How many handle transform slots are set (the largest group given plus one). */
+  int GetNumberOfHandleTransforms();
+  /** Forget every handle transform object. */
+  void RemoveAllHandleTransforms();
+
+  /**
+   * Handle group `group`'s motion (group 1 and above), as HandleTranslation and HandleRotation
+   * move group 0, about the group's rest centroid (GetHandleGroupCenter); a transform object
+   * takes precedence. `group` is a vtkIdType because ParaView's client-server layer converts
+   * doubles to 64-bit integers (its HandleGroupMotions property calls this).
+   */
+  void SetHandleGroupMotion(vtkIdType group, double translationX, double translationY,
+    double translationZ, double rotationX, double rotationY, double rotationZ);
+  /** Group `group`'s motion as (translation, rotation); false if it has none. */
+  bool GetHandleGroupMotion(int group, double motion[6]);
+  /** How many groups have a motion. */
+  int GetNumberOfHandleGroupMotions();
+  /** Forget every group's motion. */
+  void RemoveAllHandleGroupMotions();
+
+  /**
+   * The rest centroid of handle group `group` in the region of the last update, the natural
+   * pivot of its handle widget; false, or (0, 0, 0), if the last update had no such group. The
+   * second form is for callers that take no output arguments (ParaView's client-server layer).
+   */
+  bool GetHandleGroupCenter(int group, double center[3]);
+  double* GetHandleGroupCenter(int group) VTK_SIZEHINT(3);
+
+  /**
+   * How many handle groups the region of the last update has (groups 0, 1, ...): 1 for a
+   * handle alone, 0 before the first region.
+   */
+  int GetNumberOfHandleGroups();
+  ///@}
+
+  /**
+   * @name Region
+   * Which vertices the handle and the region of interest hold, and how distances are measured.
+   */
+  ///@{
   /**
    * How the handle and the ROI are chosen: geodesic discs around HandleCenter (default) or the
    * integer point array named with SetInputArrayToProcess (0 fixed, 1 ROI, 2+ handle group).
@@ -102,7 +210,7 @@ public:
    * selected cells, are handle group 0, and the ROI is every point within ROIRadius of them on
    * the surface. Any selection vtkExtractSelection reads works (ids, global ids, frustums,
    * locations, thresholds). A connected selection takes precedence over SelectionMode;
-   * HandleCenter remains the pivot of HandleRotation.
+   * HandleCenter remains the pivot of HandleRotation. SetSelectionData(nullptr) removes it.
    */
   void SetSelectionConnection(vtkAlgorithmOutput* selection)
   {
@@ -111,12 +219,6 @@ public:
   /** The handle's selection as a data object (see SetSelectionConnection); nullptr for none. */
   void SetSelectionData(vtkSelection* selection);
 
-  enum RadiusUnitsTypes
-  {
-    RADIUS_ABSOLUTE = 0,
-    RADIUS_DIAGONAL_FRACTION = 1
-  };
-
   /**
    * Units of HandleRadius, ROIRadius and NormalSmoothingRadius: mesh units (absolute, the
    * default) or fractions of the diagonal of the input's bounding box, so that one setting fits
@@ -124,23 +226,15 @@ public:
    */
   vtkSetClampMacro(RadiusUnits, int, RADIUS_ABSOLUTE, RADIUS_DIAGONAL_FRACTION);
   vtkGetMacro(RadiusUnits, int);
+  /** Radii in mesh units (the default). */
+  void SetRadiusUnitsToAbsolute() { this->SetRadiusUnits(RADIUS_ABSOLUTE); }
+  /** Radii as fractions of the input's bounding-box diagonal. */
+  void SetRadiusUnitsToDiagonalFraction() { this->SetRadiusUnits(RADIUS_DIAGONAL_FRACTION); }
   /**
    * Mesh units per radius unit: 1 for absolute radii, the input's bounding-box diagonal for
    * fractions of it (1 while there is no input). Widgets that draw the radii use it.
    */
   double GetRadiusScale();
-  /** Radii in mesh units (the default). */
-  void SetRadiusUnitsToAbsolute() { this->SetRadiusUnits(RADIUS_ABSOLUTE); }
-  /** Radii as fractions of the input's bounding-box diagonal. */
-  void SetRadiusUnitsToDiagonalFraction() { this->SetRadiusUnits(RADIUS_DIAGONAL_FRACTION); }
-
-  /**
-   * Geodesic selection: the point the handle is centred on, in mesh coordinates; the handle
-   * sits on the surface vertex nearest it (a warning says when that vertex is farther away than
-   * the handle radius). Default (0, 0, 0).
-   */
-  vtkSetVector3Macro(HandleCenter, double);
-  vtkGetVector3Macro(HandleCenter, double);
 
   /**
    * Geodesic selection: the handle holds the vertices within this surface distance of its
@@ -155,12 +249,6 @@ public:
    */
   vtkSetMacro(ROIRadius, double);
   vtkGetMacro(ROIRadius, double);
-
-  enum DistanceMethods
-  {
-    DISTANCE_FAST_MARCHING = 0,
-    DISTANCE_EDGE_PATHS = 1
-  };
 
   /**
    * How distances on the surface are measured, for the handle, the ROI, the anchor band and
@@ -184,19 +272,19 @@ public:
   vtkGetMacro(AnchorPadding, double);
 
   /**
-   * Soft-constraint weight of the handle vertices (1e-3 to 1e6). Default 100, so that handles
-   * land within a small fraction of a percent of their targets.
+   * Treat input points at the same position (to 1e-10 of the region's size) as one surface
+   * vertex, so that texture seams and triangle soups edit as one surface. Default on.
    */
-  vtkSetClampMacro(HandleWeight, double, 1e-3, 1e6);
-  vtkGetMacro(HandleWeight, double);
+  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
+  ///@}
 
   /**
-   * Soft-constraint weight of the anchors at the ROI's outer edge (0 to 1e6), proportional to
-   * the distance from the handle inside the padding. Default 1.
+   * @name Laplacian system
+   * The differential operator and the soft constraints (Sections 2, 3 and 6).
    */
-  vtkSetClampMacro(AnchorWeight, double, 0.0, 1e6);
-  vtkGetMacro(AnchorWeight, double);
-
+  ///@{
   /**
    * Weights of the Laplacian: uniform (the paper's umbrella operator, default) or cotangent
    * (clamped for obtuse and degenerate triangles; see LaplacianOperator.h).
@@ -218,7 +306,27 @@ public:
   vtkGetMacro(OperatorOrder, int);
 
   /**
-   * How the differential coordinates follow the edit's local rotations:
+   * Soft-constraint weight of the handle vertices (1e-3 to 1e6). Default 100, so that handles
+   * land within a small fraction of a percent of their targets.
+   */
+  vtkSetClampMacro(HandleWeight, double, 1e-3, 1e6);
+  vtkGetMacro(HandleWeight, double);
+
+  /**
+   * Soft-constraint weight of the anchors at the ROI's outer edge (0 to 1e6), proportional to
+   * the distance from the handle inside the padding. Default 1.
+   */
+  vtkSetClampMacro(AnchorWeight, double, 0.0, 1e6);
+  vtkGetMacro(AnchorWeight, double);
+  ///@}
+
+  /**
+   * @name Rotation mode
+   * How the differential coordinates follow the edit's local rotations, and each mode's own
+   * settings.
+   */
+  ///@{
+  /**
    * - None (default): they keep their global orientation (Section 3);
    * - Explicit: each turns with a local frame on smooth normals of a reference edit (Sections
    *   4 and 7);
@@ -240,6 +348,46 @@ public:
   void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
 
   /**
+   * Explicit mode: support radius of the smooth normals, in RadiusUnits. It should exceed the
+   * size of the details, so that the normals are those of the surface under them. 0 (the
+   * default) means 0.2 times the ROI radius (in array mode, the largest distance of an ROI
+   * vertex from the handles).
+   */
+  vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(NormalSmoothingRadius, double);
+
+  /**
+   * Explicit mode: how many times (1 to 100) to re-estimate the rotations from the previous
+   * result and solve again with the same factor. 1 (default) is the paper's method; more fix
+   * the under-rotation of large bends.
+   */
+  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
+  vtkGetMacro(NumberOfIterations, int);
+
+  /**
+   * Implicit mode's energy. Per edge (default): the paper's fitted transforms, as linearized
+   * rotations, matched against every one-ring edge. Paper: Section 5 as published, one residual
+   * per vertex and similarity transforms, which leaves bending nearly free where the region is
+   * held weakly (Armadillo's finger next to the handle moved 2.8 times as far as the handle).
+   */
+  vtkSetClampMacro(ImplicitFormulation, int, IMPLICIT_PER_EDGE, IMPLICIT_PAPER);
+  vtkGetMacro(ImplicitFormulation, int);
+  /** The implicit energy matched per one-ring edge (the default). */
+  void SetImplicitFormulationToPerEdge() { this->SetImplicitFormulation(IMPLICIT_PER_EDGE); }
+  /** The implicit energy as the paper publishes it (Section 5); may inflate free parts. */
+  void SetImplicitFormulationToPaper() { this->SetImplicitFormulation(IMPLICIT_PAPER); }
+
+  /**
+   * Implicit mode: follow the linear solve with one as-rigid-as-possible step, which takes out
+   * the growth of details that linearized rotations cause under large turns (the cactus's
+   * 70-degree turn: area 1.23 without, 1.02 with). Default on. Off, a move is a small dense
+   * product; on, it also costs a local step and the solves of a second, Laplacian factor.
+   */
+  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
+
+  /**
    * As-rigid-as-possible mode: the most local-global iterations per update (0 to 10000).
    * Default 30: enough for large regions to come within a few percent of the converged energy
    * (Documentation/quality.md).
@@ -248,10 +396,18 @@ public:
   vtkGetMacro(ARAPIterations, int);
 
   /**
+   * As-rigid-as-possible mode: an update stops early when its iterations lower the energy by
+   * less than this fraction of it per iteration, on average over the last three (a drag step:
+   * its last iteration); 0 to 1. Default 1e-3.
+   */
+  vtkSetClampMacro(Convergence, double, 0.0, 1.0);
+  vtkGetMacro(Convergence, double);
+
+  /**
    * As-rigid-as-possible mode: a handle is being dragged (vtkDeformationHandleWidget and its
    * ParaView panel set it). Meanwhile each update runs at most DragARAPIterations, so every
    * frame costs about the same. Turning it on does not mark the filter modified; turning it off
-   * does (unless the drag was previewed, PreviewHandleMotion, whose motion the next update
+   * does (unless the drag was previewed, vtkLaplacianDragPreview, whose motion the next update
    * applies anyway), and the next update settles the shape: ARAPIterations in full, without
    * the Convergence test, which the slow tail a drag leaves would pass at once. Default off.
    */
@@ -265,14 +421,6 @@ public:
    */
   vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
   vtkGetMacro(DragARAPIterations, int);
-
-  /**
-   * As-rigid-as-possible mode: an update stops early when its iterations lower the energy by
-   * less than this fraction of it per iteration, on average over the last three (a drag step:
-   * its last iteration); 0 to 1. Default 1e-3.
-   */
-  vtkSetClampMacro(Convergence, double, 0.0, 1.0);
-  vtkGetMacro(Convergence, double);
 
   /**
    * As-rigid-as-possible mode: Anderson acceleration mixes the last iterates, with a safeguard
@@ -292,53 +440,13 @@ public:
   vtkSetMacro(Extrapolation, vtkTypeBool);
   vtkGetMacro(Extrapolation, vtkTypeBool);
   vtkBooleanMacro(Extrapolation, vtkTypeBool);
+  ///@}
 
   /**
-   * Explicit mode: support radius of the smooth normals, in RadiusUnits. It should exceed the
-   * size of the details, so that the normals are those of the surface under them. 0 (the
-   * default) means 0.2 times the ROI radius (in array mode, the largest distance of an ROI
-   * vertex from the handles).
+   * @name Solver
+   * The sparse factorization (Section 8).
    */
-  vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(NormalSmoothingRadius, double);
-
-  /**
-   * Explicit mode: how many times (1 to 100) to re-estimate the rotations from the previous
-   * result and solve again with the same factor. 1 (default) is the paper's method; more fix
-   * the under-rotation of large bends.
-   */
-  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
-  vtkGetMacro(NumberOfIterations, int);
-
-  /**
-   * Implicit mode: follow the linear solve with one as-rigid-as-possible step, which takes out
-   * the growth of details that linearized rotations cause under large turns (the cactus's
-   * 70-degree turn: area 1.23 without, 1.02 with). Default on. Off, a move is a small dense
-   * product; on, it also costs a local step and the solves of a second, Laplacian factor.
-   */
-  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
-
-  enum ImplicitFormulations
-  {
-    IMPLICIT_PER_EDGE = 0,
-    IMPLICIT_PAPER = 1
-  };
-
-  /**
-   * Implicit mode's energy. Per edge (default): the paper's fitted transforms, as linearized
-   * rotations, matched against every one-ring edge. Paper: Section 5 as published, one residual
-   * per vertex and similarity transforms, which leaves bending nearly free where the region is
-   * held weakly (Armadillo's finger next to the handle moved 2.8 times as far as the handle).
-   */
-  vtkSetClampMacro(ImplicitFormulation, int, IMPLICIT_PER_EDGE, IMPLICIT_PAPER);
-  vtkGetMacro(ImplicitFormulation, int);
-  /** The implicit energy matched per one-ring edge (the default). */
-  void SetImplicitFormulationToPerEdge() { this->SetImplicitFormulation(IMPLICIT_PER_EDGE); }
-  /** The implicit energy as the paper publishes it (Section 5); may inflate free parts. */
-  void SetImplicitFormulationToPaper() { this->SetImplicitFormulation(IMPLICIT_PAPER); }
-
+  ///@{
   /**
    * Sparse Cholesky backend: CHOLMOD supernodal (default where built in), Eigen's
    * SimplicialLDLT, or MUMPS, which factors across the MPI processes (only
@@ -356,14 +464,6 @@ public:
   /** Whether this build has CHOLMOD. */
   static bool IsCholmodAvailable();
 
-  enum Orderings
-  {
-    ORDERING_AUTOMATIC = 0,
-    ORDERING_AMD = 1,
-    ORDERING_METIS = 2,
-    ORDERING_NESTED_DISSECTION = 3
-  };
-
   /**
    * CHOLMOD's fill-reducing ordering: automatic (default: AMD below 300,000 unknowns, METIS
    * from there and for the implicit mode's 3 x 3 block system), AMD, METIS or CHOLMOD's nested
@@ -379,15 +479,12 @@ public:
    */
   vtkSetClampMacro(MaximumFactorMemory, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumFactorMemory, double);
+  ///@}
 
   /**
-   * Treat input points at the same position (to 1e-10 of the region's size) as one surface
-   * vertex, so that texture seams and triangle soups edit as one surface. Default on.
+   * @name Output
    */
-  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
-
+  ///@{
   /**
    * Add the EditRole point array (0 fixed, 1 anchor, 2 free, 3 handle), a vtkSignedCharArray;
    * it becomes the active scalars where the input has none. Default on.
@@ -406,59 +503,26 @@ public:
   vtkBooleanMacro(RoleColors, vtkTypeBool);
 
   /**
-   * The transform of handle group 0, applied to the handle's rest positions. nullptr (the
-   * default) means HandleTranslation and HandleRotation. The filter's MTime includes the
-   * transforms' MTimes.
+   * Whole copies of a rest array (points, normals, EditRole) the output has taken since
+   * construction. The output's arrays are kept between updates and a handle move rewrites only
+   * the tuples of its region in place, so a move adds none, unless the array the output held
+   * is still held elsewhere (a reference or shallow copy kept by the caller, a downstream output
+   * not yet updated), which is never written: copy on write. A new input, new input content or
+   * a commit copies once.
    */
-  void SetHandleTransform(vtkLinearTransform* transform) { this->SetHandleTransform(0, transform); }
-  vtkLinearTransform* GetHandleTransform() { return this->GetHandleTransform(0); }
+  vtkIdType GetNumberOfOutputCopies();
+  ///@}
 
   /**
-   * Handle group 0's translation, in mesh units, applied after HandleRotation: the simplest way
-   * to move the handle from scripts, Python, vedo and ParaView. Used when no transform object
-   * is set for group 0. Default (0, 0, 0).
+   * @name Commits
+   * An edit made the rest shape of the next, without touching the pipeline connection.
    */
-  vtkSetVector3Macro(HandleTranslation, double);
-  vtkGetVector3Macro(HandleTranslation, double);
-
+  ///@{
   /**
-   * Handle group 0's rotation: angles in degrees about x, then y, then z, about HandleCenter,
-   * applied before HandleTranslation. Used when no transform object is set for group 0.
-   * Default (0, 0, 0).
-   */
-  vtkSetVector3Macro(HandleRotation, double);
-  vtkGetVector3Macro(HandleRotation, double);
-
-  /**
-   * The transform of handle group `group` (array value 2 + group); nullptr for no motion.
-   */
-  void SetHandleTransform(int group, vtkLinearTransform* transform);
-  vtkLinearTransform* GetHandleTransform(int group);
-  /** How many handle transform slots are set (the largest group given plus one). */
-  int GetNumberOfHandleTransforms();
-  /** Forget every handle transform object. */
-  void RemoveAllHandleTransforms();
-
-  /**
-   * Handle group `group`'s motion (group 1 and above), as HandleTranslation and HandleRotation
-   * move group 0, about the group's rest centroid (GetHandleGroupCenter); a transform object
-   * takes precedence. ParaView's HandleGroupMotions property calls it (`group` is a vtkIdType:
-   * ParaView's client-server layer converts doubles to 64-bit integers, not to int).
-   */
-  void SetHandleGroupMotion(vtkIdType group, double translationX, double translationY,
-    double translationZ, double rotationX, double rotationY, double rotationZ);
-  /** Group `group`'s motion as (translation, rotation); false if it has none. */
-  bool GetHandleGroupMotion(int group, double motion[6]);
-  /** How many groups have a motion. */
-  int GetNumberOfHandleGroupMotions();
-  /** Forget every group's motion. */
-  void RemoveAllHandleGroupMotions();
-
-  /**
-   * Make the current result the rest shape of the next edit, keeping the input connection:
-   * the filter updates, keeps the output's points, sets the handle motions to rest, moves
-   * HandleCenter with the handle and fires EditCommittedEvent (paired widgets reset their
-   * transforms on it). A new input forgets all commits.
+   * Make the current result the rest shape of the next edit: the filter updates, keeps the
+   * output's points, sets the handle motions to rest, moves HandleCenter with the handle and
+   * fires EditCommittedEvent (paired widgets reset their transforms on it). A new input forgets
+   * all commits.
    */
   void CommitEdit();
   /**
@@ -474,112 +538,51 @@ public:
   };
   /** How many commits the current input has. */
   int GetNumberOfCommits();
-
   /**
    * The rest position of input point `id`: after CommitEdit its committed position, else the
    * input's. Returns false for an id the input does not have.
    */
   bool GetRestPoint(vtkIdType id, double point[3]);
+  ///@}
 
   /**
-   * The rest centroid of handle group `group` in the region of the last update, the natural
-   * pivot of its handle widget; false if the last update had no such group.
+   * @name Results of the last update
    */
-  bool GetHandleGroupCenter(int group, double center[3]);
-  /**
-   * The same centroid as a return value, for callers through ParaView's client-server layer,
-   * which returns no output arguments (the plugin's panel); (0, 0, 0) if there is no such group.
-   */
-  double* GetHandleGroupCenter(int group) VTK_SIZEHINT(3);
-
-  /**
-   * How many handle groups the region of the last update has (groups 0, 1, ...): 1 for a
-   * handle alone, 0 before the first region.
-   */
-  int GetNumberOfHandleGroups();
-
   ///@{
+  /** ROI and handle vertices; vertices of the surface graph, the part of the input the edit can
+   * reach (the graph and the caches cost in proportion to it). */
+  int GetNumberOfROIVertices();
+  int GetNumberOfHandleVertices();
+  int GetNumberOfSurfaceVertices();
+  /**
+   * Seconds building the surface graph (only when the input changed); of the region's setup (0
+   * when the cached factor was reused), of its ordering analysis and of its numeric
+   * factorization alone; and solving and writing the output for the current handle transforms.
+   */
+  double GetTopologyTime();
+  double GetSetupTime();
+  double GetAnalysisTime();
+  double GetFactorizationTime();
+  double GetSolveTime();
   /**
    * Numeric factorizations completed since construction, and those attempted, failed ones
    * included: a failed one is not attempted again until something it depends on changes.
    */
-  vtkGetMacro(NumberOfFactorizations, int);
-  vtkGetMacro(NumberOfFactorizationAttempts, int);
-  ///@}
-
+  int GetNumberOfFactorizations();
+  int GetNumberOfFactorizationAttempts();
   /**
-   * Whole copies of a rest array (points, normals, EditRole) the output has taken since
-   * construction. The output's arrays are kept between updates and a handle move rewrites only
-   * the tuples of its region in place, so a move adds none, unless the array the output held
-   * is still held elsewhere (a reference or shallow copy kept by the caller, a downstream output
-   * not yet updated), which is never written: copy on write. A new input, new input content or
-   * a commit copies once.
+   * As-rigid-as-possible mode: the iterations run and the energy reached (per vertex, the
+   * weighted squared residual of its one-ring after its best rotation, over the weighted
+   * squared rest edge lengths; 0 for a rigid motion).
    */
-  vtkIdType GetNumberOfOutputCopies();
-
-  ///@{
-  /**
-   * A drag's preview, outside the pipeline, for views that redraw a whole surface whenever any
-   * point of it moves (ParaView's representations take about a second a frame at 2M points):
-   * solves the last update's edit with the handle's translation and rotation (as
-   * HandleTranslation and HandleRotation) replaced by these, as one update of a drag would
-   * (DragARAPIterations), and writes the result into the moving part: the polygons with a
-   * corner in the region, on a compact copy of their points and point and cell data, normals
-   * refreshed. The still part is the rest of the surface. A view draws both in place of the
-   * output (vtkDeformationHandleRepresentation::SetPreviewFilter) and uploads only the moving
-   * part each move. Neither the filter nor its output is modified; the next update solves and
-   * writes as usual. Returns false, previewing nothing, when the last update solved no edit
-   * or anything but the handle's motion changed since (properties, transforms, input). The
-   * still part costs in proportion to the surface once per region (its own polygons); the
-   * parts are kept until ReleasePreview or the next region. A handle group that has a
-   * transform (SetHandleTransform) keeps it.
-   */
-  bool PreviewHandleMotion(const double translation[3], const double rotation[3]);
-  bool PreviewHandleMotion(double tx, double ty, double tz, double rx, double ry, double rz);
-  vtkPolyData* GetPreviewStillPart();
-  vtkPolyData* GetPreviewMovingPart();
-  void ReleasePreview();
-  ///@}
-
-  ///@{
-  /**
-   * Facts of the last update: ROI and handle sizes; seconds building the surface graph (only
-   * when the input changed); seconds of the region's setup (0 when the cached factor was
-   * reused), of its ordering analysis and of its numeric factorization alone; and seconds
-   * solving and writing the output for the current handle transforms.
-   */
-  vtkGetMacro(NumberOfROIVertices, int);
-  vtkGetMacro(NumberOfHandleVertices, int);
-  vtkGetMacro(TopologyTime, double);
-  vtkGetMacro(SetupTime, double);
-  vtkGetMacro(AnalysisTime, double);
-  vtkGetMacro(FactorizationTime, double);
-  vtkGetMacro(SolveTime, double);
-  ///@}
-
-  ///@{
-  /**
-   * As-rigid-as-possible mode, last update: the iterations run and the energy reached (per
-   * vertex, the weighted squared residual of its one-ring after its best rotation, over the
-   * weighted squared rest edge lengths; 0 for a rigid motion).
-   */
-  vtkGetMacro(NumberOfARAPIterations, int);
-  vtkGetMacro(ARAPEnergy, double);
-  ///@}
-
-  /**
-   * Vertices of the surface graph the current region was selected on: the part of the input the
-   * edit can reach, so that the graph and the caches cost in proportion to the region.
-   */
-  vtkGetMacro(NumberOfSurfaceVertices, int);
-
-  ///@{
+  int GetNumberOfARAPIterations();
+  double GetARAPEnergy();
   /**
    * Megabytes of the factors held for the current region (0 if unknown), and whether they are
    * spread across MPI processes (MUMPS).
    */
-  vtkGetMacro(FactorMemory, double);
-  vtkGetMacro(FactoredAcrossProcesses, vtkTypeBool);
+  double GetFactorMemory();
+  vtkTypeBool GetFactoredAcrossProcesses();
   ///@}
 
   vtkMTimeType GetMTime() override;
@@ -592,26 +595,36 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
-   * The edit of one whole surface, in stages (see RunStages). On bad input: an error, and the
-   * output is the input.
+   * The edit of one whole surface: checks it, then runs the edit pipeline on its rest shape and
+   * writes `output` (null: not written; the parallel filter's ranks write their own pieces).
+   * On bad input: an error, and the output is the input.
    */
   void EditSurface(vtkPolyData* input, vtkPolyData* output);
 
   /**
+   * Writes `edit` (null: nothing moved) into `output`, a shallow copy of `rest`, with EditRole
+   * as GenerateEditRoles and RoleColors say.
+   */
+  void WriteEdit(vtkPolyData* rest, vtkPolyData* output,
+    const LaplacianEditing::Pipeline::OutputEdit* edit);
+
+  /** The pipeline that runs the edits, for the parallel filter to share them out. */
+  const LaplacianEditing::Pipeline::EditPipeline& GetEditPipeline() const;
+
+  /**
    * The labels of the selection on port 1 for the surface being edited
-   * (vtkLaplacianRegionSelector::LabelSelection for piece 0); the parallel filter's gathered
-   * surface carries those of its pieces.
+   * (RegionSelector::LabelSelection for piece 0); the parallel filter's gathered surface
+   * carries those of its pieces.
    */
   virtual vtkSmartPointer<vtkIntArray> SelectionLabels(vtkPolyData* input, vtkSelection* selection);
 
-  /**
-   * The properties that choose the region, radii in mesh units.
-   */
-  vtkLaplacianRegionParameters RegionParameters() const;
+  /** The processes a factor may be spread across (the parallel filter's MUMPS); none here. */
+  virtual LaplacianEditing::DistributedSolver* GetDistributedSolver() { return nullptr; }
 
-  /**
-   * A radius property in mesh units, after RadiusUnits.
-   */
+  /** The properties that choose the region, radii in mesh units. */
+  LaplacianEditing::Pipeline::RegionParameters RegionParameters() const;
+
+  /** A radius property in mesh units, after RadiusUnits. */
   double AbsoluteRadius(double radius) const;
 
   /**
@@ -620,36 +633,11 @@ protected:
    */
   double WholeDiagonal = 0.0;
 
-  /**
-   * Writes `edit` into `output`, a shallow copy of `rest` (null: nothing moved), in place in
-   * the arrays kept from earlier updates (vtkLaplacianOutputWriter), with EditRole as
-   * GenerateEditRoles and RoleColors say.
-   */
-  void WriteEdit(vtkPolyData* rest, vtkPolyData* output, const vtkLaplacianOutputEdit* edit);
-
-  /**
-   * Writes the solved edit into `output` (a shallow copy of `rest`): the moved points, the
-   * refreshed normals and EditRole. The parallel filter's ranks write their own pieces instead.
-   */
-  virtual void WriteOutput(vtkPolyData* rest, vtkPolyData* output);
-
-  /**
-   * After EditSurface: the edit it solved, for the parallel filter to share out among the pieces
-   * (see vtkLaplacianPieceEdit.h); false when it solved none.
-   */
-  bool GetEditState(vtkLaplacianEditState& state) const;
-
-  /**
-   * The processes a factor may be spread across (the parallel filter's MUMPS); none here.
-   */
-  virtual LaplacianEditing::DistributedSolver* GetDistributedSolver() { return nullptr; }
-
   int SelectionMode = SELECTION_GEODESIC;
   int RadiusUnits = RADIUS_ABSOLUTE;
   double HandleCenter[3] = { 0.0, 0.0, 0.0 };
   double HandleTranslation[3] = { 0.0, 0.0, 0.0 };
   double HandleRotation[3] = { 0.0, 0.0, 0.0 };
-  double ReturnedGroupCenter[3] = { 0.0, 0.0, 0.0 };
   double HandleRadius = 0.05;
   double ROIRadius = 0.5;
   double AnchorPadding = 0.1;
@@ -665,7 +653,6 @@ protected:
   int ImplicitFormulation = IMPLICIT_PER_EDGE;
   int ARAPIterations = 30;
   vtkTypeBool Dragging = 0;
-  bool SettleAfterDrag = false; // the next update runs ARAPIterations in full
   int DragARAPIterations = 2;
   double Convergence = 1e-3;
   vtkTypeBool Acceleration = 1;
@@ -677,42 +664,22 @@ protected:
   vtkTypeBool GenerateEditRoles = 1;
   vtkTypeBool RoleColors = 1;
 
-  int NumberOfFactorizations = 0;
-  int NumberOfFactorizationAttempts = 0;
-  int NumberOfROIVertices = 0;
-  int NumberOfHandleVertices = 0;
-  double TopologyTime = 0.0;
-  double SetupTime = 0.0;
-  double AnalysisTime = 0.0;
-  double FactorizationTime = 0.0;
-  double SolveTime = 0.0;
-  double FactorMemory = 0.0;
-  vtkTypeBool FactoredAcrossProcesses = 0;
-  int NumberOfSurfaceVertices = 0;
-  int NumberOfARAPIterations = 0;
-  double ARAPEnergy = 0.0;
-
 private:
-  // The stages: the rest shape and the labels (CheckInput), the surface graph, the region and
-  // its system, the rotation model, the solve, the output. Each returns false, with an error
-  // reported, when the edit cannot go on.
-  void RunStages(vtkPolyData* input, vtkPolyData* output);
+  friend class vtkLaplacianDragPreview;
+
+  // The properties that shape the system and the rotation model.
+  LaplacianEditing::Pipeline::SolverSettings Settings();
+  // vtkLaplacianDragPreview's: a drag step of the last update's edit with group 0's motion
+  // replaced; false where anything but that motion changed since, or the solve failed. The rest
+  // surface it solved on.
+  bool SolveDragStep(const double translation[3], const double rotation[3]);
+  vtkPolyData* GetRestSurface();
+  // The input's checks and the region's labels; false, with the error reported, on bad input.
   bool CheckInput(vtkPolyData* input);
-  bool UpdateSurfaceGraph(vtkPolyData* rest);
-  bool UpdateRegion(vtkPolyData* rest);
-  bool UpdateRotationModel();
-  bool Solve(const double translation[3], const double rotation[3]);
-  vtkLaplacianOutputEdit SolvedEdit() const;
-  vtkLaplacianSolverOptions SolverOptions(bool dragStep = false);
-  void UpdateFactorizationCounts();
-  void ResetStatistics();
   // PrintSelf's parts.
   void PrintRegionProperties(ostream& os, vtkIndent indent);
   void PrintSolverProperties(ostream& os, vtkIndent indent);
   void PrintLastUpdate(ostream& os, vtkIndent indent);
-  // An error for a non-empty message.
-  bool Check(const std::string& error);
-  bool Fail(const std::string& message);
 
   vtkLaplacianDeformationFilter(const vtkLaplacianDeformationFilter&) = delete;
   void operator=(const vtkLaplacianDeformationFilter&) = delete;

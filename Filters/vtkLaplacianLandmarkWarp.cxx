@@ -1,31 +1,26 @@
 #include "vtkLaplacianLandmarkWarp.h"
 
+#include "EditPipeline.h"
+#include "LandmarkSource.h"
 #include "SparseCholesky.h"
-#include "vtkLaplacianEditSolver.h"
-#include "vtkLaplacianLandmarkBinder.h"
-#include "vtkLaplacianNormalRefresher.h"
-#include "vtkLaplacianOutputWriter.h"
-#include "vtkLaplacianSurfaceAdapter.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
 namespace le = LaplacianEditing;
+namespace lep = LaplacianEditing::Pipeline;
 
 vtkStandardNewMacro(vtkLaplacianLandmarkWarp);
 vtkCxxSetObjectMacro(vtkLaplacianLandmarkWarp, SourceLandmarks, vtkPoints);
@@ -40,35 +35,32 @@ static_assert(static_cast<int>(le::RotationMode::AsRigidAsPossible) ==
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 // The pull of an exact fit's soft constraints: strong enough that the corrections converge in
 // a few rounds, against the system's stiffness.
 constexpr double ExactFitWeight = 100.0;
 // An exact fit that ends farther than this fraction of the diagonal from a target warns.
 constexpr double UnmetFraction = 1e-8;
+// The explicit mode's automatic support, a fraction of the diagonal.
+constexpr double AutomaticSmoothingFraction = 0.05;
 }
 
-// The stages of a warp, in the order RequestData runs them.
+// Where the warp's edits come from (the landmarks), the pipeline that runs them, and the
+// targets of port 1 as vtkPoints.
 struct vtkLaplacianLandmarkWarp::vtkInternals
 {
-  vtkLaplacianSurfaceAdapter Surface;
-  vtkLaplacianLandmarkBinder Binder;
-  vtkLaplacianEditSolver Solver;
-  vtkLaplacianNormalRefresher Normals;
-  vtkLaplacianOutputWriter Writer;
-  double Diagonal = 0.0;
-  // The landmarks of port 1, as vtkPoints.
+  explicit vtkInternals(vtkLaplacianLandmarkWarp* warp)
+    : Source(warp)
+    , Pipeline(warp, [warp](unsigned long code) { warp->SetErrorCode(code); })
+  {
+  }
+
+  lep::LandmarkSource Source;
+  lep::EditPipeline Pipeline;
   vtkNew<vtkPoints> PortTargets;
 };
 
 vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
-  : Internals(new vtkInternals)
+  : Internals(new vtkInternals(this))
 {
   if (!le::SparseCholesky::IsAvailable(le::SolverBackend::Cholmod))
   {
@@ -76,7 +68,6 @@ vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
   }
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
-  this->Internals->Writer.SetFilter(this);
 }
 
 vtkLaplacianLandmarkWarp::~vtkLaplacianLandmarkWarp()
@@ -111,72 +102,63 @@ vtkMTimeType vtkLaplacianLandmarkWarp::GetMTime()
   return time;
 }
 
+void vtkLaplacianLandmarkWarp::SetDragging(vtkTypeBool dragging)
+{
+  if (this->Dragging == dragging)
+  {
+    return;
+  }
+  this->Dragging = dragging;
+  if (this->Internals->Pipeline.SetDragging(dragging != 0))
+  {
+    this->Modified(); // the next update settles the shape the drag left
+  }
+}
+
 int vtkLaplacianLandmarkWarp::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->Internals->Solver.ResetFacts();
+  lep::EditPipeline& pipeline = this->Internals->Pipeline;
+  pipeline.BeginUpdate();
   this->NumberOfLandmarks = 0;
-  this->NumberOfWarpedVertices = 0;
-  this->BindingTime = 0.0;
   output->ShallowCopy(input);
-  vtkPoints* sources = nullptr;
-  vtkPoints* targets = nullptr;
   // A warp needs the whole surface: one piece of a distributed one would tear at its edges.
   const int pieces = outputVector->GetInformationObject(0)->Get(
     vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
   if (pieces > 1)
   {
-    this->Check("The warp needs the whole surface and was asked for one of " +
+    pipeline.Check("The warp needs the whole surface and was asked for one of " +
       std::to_string(pieces) + " pieces; run it in a serial session (the built-in server, or "
       "one process)");
     return 1;
   }
-  // Each stage reports its own error; the output stays the input.
-  if (!this->Check(vtkLaplacianSurfaceAdapter::CheckSurface(input)) ||
+  vtkPoints* sources = nullptr;
+  vtkPoints* targets = nullptr;
+  if (!pipeline.Check(lep::SurfaceAdapter::CheckSurface(input)) ||
     !this->FindLandmarks(sources, targets))
   {
     return 1;
   }
-  this->UpdateProgress(0.1);
-  if (!this->UpdateSurface(input) || this->GetAbortExecute())
+  const double diagonal = input->GetLength();
+  lep::LandmarkSource& source = this->Internals->Source;
+  source.Sources = sources;
+  source.Targets = targets;
+  source.Tolerance = this->BindingTolerance * diagonal;
+  source.MaximumDistance = this->MaximumBindingDistance * diagonal;
+  source.Exact = this->ExactFit != 0;
+  source.Weight = this->ExactFit ? ExactFitWeight : this->LandmarkWeight;
+  if (pipeline.Run(input, output, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0))
   {
-    return 1;
+    this->ReportFit(output, targets);
   }
-  this->UpdateProgress(0.3);
-  if (!this->BindLandmarks(sources) || this->GetAbortExecute())
-  {
-    return 1;
-  }
-  this->UpdateProgress(0.4);
-  if (!this->UpdateSystem(input) || this->GetAbortExecute())
-  {
-    return 1;
-  }
-  this->UpdateProgress(0.8);
-  if (this->Solve(targets))
-  {
-    this->WriteOutput(input, output, targets);
-  }
-  this->UpdateProgress(1.0);
   return 1;
-}
-
-bool vtkLaplacianLandmarkWarp::Check(const std::string& error)
-{
-  if (error.empty())
-  {
-    return true;
-  }
-  vtkErrorMacro(<< error);
-  this->SetErrorCode(vtkErrorCode::UserError);
-  return false;
 }
 
 bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& targets)
 {
+  lep::EditPipeline& pipeline = this->Internals->Pipeline;
   if (auto* landmarks = vtkPointSet::SafeDownCast(this->GetInputDataObject(1, 0)))
   {
     // Port 1: its points, and the targets' array.
@@ -184,9 +166,9 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
     vtkDataArray* array = this->GetInputArrayToProcess(0, landmarks);
     if (!sources || !array || array->GetNumberOfComponents() != 3)
     {
-      return this->Check("The landmarks on input port 1 need points (the sources) and a point "
-                        "array of three components holding the targets (\"Target\" unless "
-                        "SetInputArrayToProcess names another).");
+      return pipeline.Check("The landmarks on input port 1 need points (the sources) and a "
+                            "point array of three components holding the targets (\"Target\" "
+                            "unless SetInputArrayToProcess names another).");
     }
     this->Internals->PortTargets->SetData(array);
     targets = this->Internals->PortTargets;
@@ -198,154 +180,56 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
   }
   if (!sources || !targets || sources->GetNumberOfPoints() == 0)
   {
-    return this->Check("No landmarks: SetSourceLandmarks and SetTargetLandmarks, or connect a "
-                      "point set with a Target point array to input port 1.");
+    return pipeline.Check("No landmarks: SetSourceLandmarks and SetTargetLandmarks, or connect "
+                          "a point set with a Target point array to input port 1.");
   }
   if (sources->GetNumberOfPoints() != targets->GetNumberOfPoints())
   {
     std::ostringstream message;
     message << "There are " << sources->GetNumberOfPoints() << " source landmarks and "
             << targets->GetNumberOfPoints() << " targets: give each source landmark one target.";
-    return this->Check(message.str());
+    return pipeline.Check(message.str());
   }
   this->NumberOfLandmarks = static_cast<int>(sources->GetNumberOfPoints());
   return true;
 }
 
-bool vtkLaplacianLandmarkWarp::UpdateSurface(vtkPolyData* input)
+lep::SolverSettings vtkLaplacianLandmarkWarp::Settings(double diagonal) const
 {
-  vtkInternals& internals = *this->Internals;
-  internals.Diagonal = input->GetLength();
-  bool rebuilt = false;
-  const std::string error = internals.Surface.Update(
-    input, this->MergeCoincidentPoints != 0, vtkLaplacianSurfaceAdapter::Reach(), rebuilt);
-  if (rebuilt)
-  {
-    internals.Solver.SetMesh(internals.Surface.GetMesh());
-  }
-  return this->Check(error);
+  lep::SolverSettings settings;
+  settings.LaplacianWeights = this->LaplacianWeights;
+  settings.Solver = this->Solver;
+  settings.RotationMode = this->RotationMode;
+  settings.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
+    ? this->NormalSmoothingRadius
+    : AutomaticSmoothingFraction * diagonal;
+  settings.NumberOfIterations = this->NumberOfIterations;
+  settings.PreserveDetailScale = this->PreserveDetailScale != 0;
+  settings.ARAPIterations = this->ARAPIterations;
+  settings.Convergence = this->Convergence;
+  settings.Dragging = this->Dragging != 0;
+  settings.DragARAPIterations = this->DragARAPIterations;
+  settings.Bending = this->BendingWeight;
+  return settings;
 }
 
-bool vtkLaplacianLandmarkWarp::BindLandmarks(vtkPoints* sources)
+void vtkLaplacianLandmarkWarp::ReportFit(vtkPolyData* output, vtkPoints* targets)
 {
-  vtkInternals& internals = *this->Internals;
-  const Clock::time_point start = Clock::now();
-  bool rebound = false;
-  if (!this->Check(internals.Binder.Update(
-        sources, internals.Surface, this->MaximumBindingDistance * internals.Diagonal, rebound)))
-  {
-    return false;
-  }
-  if (!rebound)
-  {
-    return true;
-  }
-  this->BindingTime = SecondsSince(start);
-  const std::vector<double>& distances = internals.Binder.GetDistances();
-  const double tolerance = this->BindingTolerance * internals.Diagonal;
-  const auto farthest = std::max_element(distances.begin(), distances.end());
-  const auto far = std::count_if(
-    distances.begin(), distances.end(), [tolerance](double d) { return d > tolerance; });
-  if (far > 0)
-  {
-    vtkWarningMacro(<< far << " source landmark(s) lie farther from the surface than "
-                    << "BindingTolerance (" << this->BindingTolerance
-                    << " of the diagonal), the farthest, landmark " << (farthest - distances.begin())
-                    << ", " << *farthest << " away. Each is bound to the nearest surface point, "
-                    << "which moves by the landmark's displacement.");
-  }
-  return true;
-}
-
-vtkLaplacianSolverOptions vtkLaplacianLandmarkWarp::SolverOptions() const
-{
-  const vtkInternals& internals = *this->Internals;
-  vtkLaplacianSolverOptions options;
-  options.LaplacianWeights = this->LaplacianWeights;
-  options.Solver = this->Solver;
-  options.RotationMode = this->RotationMode;
-  options.NormalSmoothingRadius =
-    this->NormalSmoothingRadius * internals.Diagonal * internals.Surface.GetScale();
-  options.NumberOfIterations = this->NumberOfIterations;
-  options.PreserveDetailScale = this->PreserveDetailScale != 0;
-  options.ARAPIterations =
-    this->Dragging ? std::min(this->DragARAPIterations, this->ARAPIterations) : this->ARAPIterations;
-  options.Convergence = this->Convergence;
-  options.Points = internals.Binder.GetPoints();
-  options.PointsVersion = internals.Binder.GetVersion();
-  options.PointWeight = this->ExactFit ? ExactFitWeight : this->LandmarkWeight;
-  options.Bending = this->BendingWeight;
-  return options;
-}
-
-bool vtkLaplacianLandmarkWarp::UpdateSystem(vtkPolyData* input)
-{
-  vtkInternals& internals = *this->Internals;
-  le::RegionRequest request;
-  request.Selection = le::RegionRequest::Kind::Components;
-  request.Seeds = internals.Binder.GetSeeds();
-  const vtkLaplacianSolverOptions options = this->SolverOptions();
-  unsigned rebuilt = le::RebuiltNothing;
-  const std::string error = internals.Solver.UpdateRegion(
-    request, [] { return std::vector<int>(); }, options, rebuilt);
-  this->NumberOfFactorizations = internals.Solver.GetEditor().GetNumberOfFactorizations();
-  if (!this->Check(error))
-  {
-    return false;
-  }
-  if (rebuilt != le::RebuiltNothing)
-  {
-    internals.Surface.IndexRegion(internals.Solver.GetEditor().GetRegion());
-    internals.Normals.Index(input, internals.Surface);
-  }
-  const bool ok = this->Check(internals.Solver.UpdateRotationModel(options, this));
-  this->NumberOfFactorizations = internals.Solver.GetEditor().GetNumberOfFactorizations();
-  this->NumberOfWarpedVertices = internals.Solver.GetEditor().GetRegion().GetNumberOfVertices();
-  return ok;
-}
-
-bool vtkLaplacianLandmarkWarp::Solve(vtkPoints* targets)
-{
-  vtkInternals& internals = *this->Internals;
-  le::PointTargets points;
-  points.Exact = this->ExactFit != 0;
-  if (!this->Check(internals.Binder.Targets(targets, internals.Surface, points)))
-  {
-    return false;
-  }
-  if (!this->Check(internals.Solver.Solve({}, &points)))
-  {
-    return false;
-  }
-  const vtkLaplacianEditSolver::Facts& facts = internals.Solver.GetFacts();
-  this->SetupTime = facts.SetupTime;
-  this->SolveTime = facts.SolveTime;
-  this->NumberOfARAPIterations = facts.NumberOfARAPIterations;
-  this->ARAPEnergy = facts.ARAPEnergy;
   // The core's miss, in fractions of the diagonal and in double precision (the output's float
   // points would add their rounding).
-  if (this->ExactFit && !this->Dragging && facts.LargestPointMiss > UnmetFraction)
+  const double miss = this->Internals->Pipeline.GetFacts().LargestPointMiss;
+  if (this->ExactFit && !this->Dragging && miss > UnmetFraction)
   {
-    vtkWarningMacro(<< "The landmarks cannot all be met: the farthest ends "
-                    << facts.LargestPointMiss << " of the diagonal from its target. A triangle "
-                    << "moves affinely, so where more landmarks than corners share a few "
-                    << "triangles they are fit in the least-squares sense; use fewer landmarks "
-                    << "there, a finer mesh, or a soft fit (ExactFitOff).");
+    vtkWarningMacro(<< "The landmarks cannot all be met: the farthest ends " << miss
+                    << " of the diagonal from its target. A triangle moves affinely, so where "
+                    << "more landmarks than corners share a few triangles they are fit in the "
+                    << "least-squares sense; use fewer landmarks there, a finer mesh, or a soft "
+                    << "fit (ExactFitOff).");
   }
-  return true;
-}
-
-void vtkLaplacianLandmarkWarp::WriteOutput(vtkPolyData* input, vtkPolyData* output, vtkPoints* targets)
-{
-  vtkInternals& internals = *this->Internals;
-  const Clock::time_point start = Clock::now();
-  const le::Positions& solution = internals.Solver.GetSolution();
-  const vtkLaplacianOutputEdit edit = internals.Surface.GetEdit(
-    solution, &internals.Normals, internals.Solver.GetModelVersion());
-  internals.Writer.Write(input, output, &edit, false, false);
   vtkNew<vtkDoubleArray> misses;
   misses->SetName("LandmarkDistance");
-  internals.Binder.Misses(output->GetPoints(), internals.Surface, targets, misses);
+  this->Internals->Source.GetBinder().Misses(
+    output->GetPoints(), this->Internals->Pipeline.GetSurface(), targets, misses);
   output->GetFieldData()->AddArray(misses);
   double largest = 0.0, squares = 0.0;
   for (vtkIdType i = 0; i < misses->GetNumberOfTuples(); ++i)
@@ -354,8 +238,43 @@ void vtkLaplacianLandmarkWarp::WriteOutput(vtkPolyData* input, vtkPolyData* outp
     squares += misses->GetValue(i) * misses->GetValue(i);
   }
   this->MaximumLandmarkDistance = largest;
-  this->RMSLandmarkDistance = std::sqrt(squares / std::max<vtkIdType>(misses->GetNumberOfTuples(), 1));
-  this->SolveTime += SecondsSince(start);
+  this->RMSLandmarkDistance =
+    std::sqrt(squares / std::max<vtkIdType>(misses->GetNumberOfTuples(), 1));
+}
+
+int vtkLaplacianLandmarkWarp::GetNumberOfWarpedVertices()
+{
+  return this->Internals->Pipeline.GetEditor().GetRegion().GetNumberOfVertices();
+}
+
+int vtkLaplacianLandmarkWarp::GetNumberOfFactorizations()
+{
+  return this->Internals->Pipeline.GetEditor().GetNumberOfFactorizations();
+}
+
+int vtkLaplacianLandmarkWarp::GetNumberOfARAPIterations()
+{
+  return this->Internals->Pipeline.GetFacts().NumberOfARAPIterations;
+}
+
+double vtkLaplacianLandmarkWarp::GetARAPEnergy()
+{
+  return this->Internals->Pipeline.GetFacts().ARAPEnergy;
+}
+
+double vtkLaplacianLandmarkWarp::GetBindingTime()
+{
+  return this->Internals->Source.GetBindingTime();
+}
+
+double vtkLaplacianLandmarkWarp::GetSetupTime()
+{
+  return this->Internals->Pipeline.GetFacts().SetupTime;
+}
+
+double vtkLaplacianLandmarkWarp::GetSolveTime()
+{
+  return this->Internals->Pipeline.GetFacts().SolveTime;
 }
 
 void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
@@ -363,30 +282,30 @@ void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SourceLandmarks: " << this->SourceLandmarks << "\n";
   os << indent << "TargetLandmarks: " << this->TargetLandmarks << "\n";
-  os << indent << "RotationMode: " << this->RotationMode << "\n";
-  os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
+  os << indent << "BindingTolerance: " << this->BindingTolerance << "\n";
+  os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
   os << indent << "ExactFit: " << (this->ExactFit ? "On" : "Off") << "\n";
   os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
+  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "RotationMode: " << this->RotationMode << "\n";
+  os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
+  os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
   os << indent << "BendingWeight: " << this->BendingWeight << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
   os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
-  os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
-  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
-  os << indent << "BindingTolerance: " << this->BindingTolerance << "\n";
-  os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
-  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "NumberOfLandmarks: " << this->NumberOfLandmarks << "\n";
-  os << indent << "NumberOfWarpedVertices: " << this->NumberOfWarpedVertices << "\n";
-  os << indent << "NumberOfFactorizations: " << this->NumberOfFactorizations << "\n";
-  os << indent << "NumberOfARAPIterations: " << this->NumberOfARAPIterations << "\n";
-  os << indent << "ARAPEnergy: " << this->ARAPEnergy << "\n";
+  os << indent << "NumberOfWarpedVertices: " << this->GetNumberOfWarpedVertices() << "\n";
+  os << indent << "NumberOfFactorizations: " << this->GetNumberOfFactorizations() << "\n";
+  os << indent << "NumberOfARAPIterations: " << this->GetNumberOfARAPIterations() << "\n";
+  os << indent << "ARAPEnergy: " << this->GetARAPEnergy() << "\n";
   os << indent << "MaximumLandmarkDistance: " << this->MaximumLandmarkDistance << "\n";
   os << indent << "RMSLandmarkDistance: " << this->RMSLandmarkDistance << "\n";
-  os << indent << "BindingTime: " << this->BindingTime << "\n";
-  os << indent << "SetupTime: " << this->SetupTime << "\n";
-  os << indent << "SolveTime: " << this->SolveTime << "\n";
+  os << indent << "BindingTime: " << this->GetBindingTime() << "\n";
+  os << indent << "SetupTime: " << this->GetSetupTime() << "\n";
+  os << indent << "SolveTime: " << this->GetSolveTime() << "\n";
 }

@@ -33,23 +33,29 @@
 #ifndef vtkLaplacianLandmarkWarp_h
 #define vtkLaplacianLandmarkWarp_h
 
-#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
-#include <string> // for std::string
 
 class vtkAlgorithmOutput;
 class vtkPoints;
-struct vtkLaplacianSolverOptions;
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+struct SolverSettings;
+}
+}
 
-class VTKLAPLACIANEDITING_EXPORT vtkLaplacianLandmarkWarp : public vtkPolyDataAlgorithm
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianLandmarkWarp : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLaplacianLandmarkWarp* New();
   vtkTypeMacro(vtkLaplacianLandmarkWarp, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  // The deformation filter's values.
   enum LaplacianWeightTypes
   {
     WEIGHTS_UNIFORM = 0,
@@ -68,6 +74,10 @@ public:
     SOLVER_SIMPLICIAL_LDLT = 1
   };
 
+  /**
+   * @name Landmarks
+   * The pairs, and how the sources are bound to the surface.
+   */
   ///@{
   /**
    * The landmarks, as vtkThinPlateSplineTransform takes them: the same number of points in
@@ -77,9 +87,7 @@ public:
   vtkGetObjectMacro(SourceLandmarks, vtkPoints);
   virtual void SetTargetLandmarks(vtkPoints* targets);
   vtkGetObjectMacro(TargetLandmarks, vtkPoints);
-  ///@}
 
-  ///@{
   /**
    * The landmarks as a point set on input port 1, which takes precedence over the vtkPoints:
    * its points are the sources, and the three-component point array that
@@ -88,31 +96,16 @@ public:
    */
   void SetLandmarksConnection(vtkAlgorithmOutput* landmarks) { this->SetInputConnection(1, landmarks); }
   void SetLandmarksData(vtkDataObject* landmarks);
-  ///@}
 
-  ///@{
   /**
-   * How details keep their orientation, as in vtkLaplacianDeformationFilter:
-   * AsRigidAsPossible (the default: the best quality under large rotations), None, Explicit
-   * or Implicit.
+   * Binding, in fractions of the input's diagonal: a landmark farther than BindingTolerance
+   * (0.01) from the surface warns, one farther than MaximumBindingDistance (0.1) is an error.
    */
-  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
-  vtkGetMacro(RotationMode, int);
-  void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
-  void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
-  void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
-  void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
-  ///@}
+  vtkSetClampMacro(BindingTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(BindingTolerance, double);
+  vtkSetClampMacro(MaximumBindingDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumBindingDistance, double);
 
-  ///@{
-  /** Edge weights of the operator: Cotangent (the default, clamped) or Uniform. */
-  vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
-  vtkGetMacro(LaplacianWeights, int);
-  void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
-  void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
-  ///@}
-
-  ///@{
   /**
    * An exact fit (the default) moves every landmark onto its target, to 1e-10 of the
    * diagonal; off, each landmark is pulled by LandmarkWeight (relative to the surface's
@@ -123,9 +116,49 @@ public:
   vtkBooleanMacro(ExactFit, vtkTypeBool);
   vtkSetClampMacro(LandmarkWeight, double, 1e-6, 1e6);
   vtkGetMacro(LandmarkWeight, double);
+
+  /** Points at the same position, up to rounding, are one surface vertex (on). */
+  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
+  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
   ///@}
 
+  /**
+   * @name Rotation mode
+   * As vtkLaplacianDeformationFilter's properties of the same names, with the defaults of a
+   * warp: a warp solves to convergence at once, where an edit is dragged.
+   */
   ///@{
+  /**
+   * How details keep their orientation: AsRigidAsPossible (the default: the best quality under
+   * large rotations), None, Explicit or Implicit.
+   */
+  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
+  vtkGetMacro(RotationMode, int);
+  void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
+  void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
+  void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
+  void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
+
+  /** Edge weights of the operator: Cotangent (the default, clamped) or Uniform. */
+  vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
+  vtkGetMacro(LaplacianWeights, int);
+  void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
+  void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
+
+  /**
+   * Explicit mode: the smooth normals' support in mesh units; 0 (the default) means 0.05 of
+   * the input's diagonal. Explicit mode: the reference-rotate-solve passes (1). Implicit mode:
+   * the rigid step after the linear solve (on).
+   */
+  vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(NormalSmoothingRadius, double);
+  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
+  vtkGetMacro(NumberOfIterations, int);
+  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
+  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
+
   /**
    * As-rigid-as-possible mode: the weight of its bending term (100), a second-order term that
    * keeps the surface smooth between sparse landmarks. Without it (0), the first-order energy
@@ -133,81 +166,57 @@ public:
    */
   vtkSetClampMacro(BendingWeight, double, 0.0, 1e6);
   vtkGetMacro(BendingWeight, double);
-  ///@}
 
-  ///@{
   /**
-   * As-rigid-as-possible mode: the most iterations an update (100), the relative energy
-   * decrease an iteration that stops it (1e-4), and while Dragging (a landmark dragged
-   * interactively), the most iterations an update (DragARAPIterations, 2).
+   * As-rigid-as-possible mode: the most iterations an update (100) and the relative energy
+   * decrease an iteration that stops it (1e-4).
    */
-  vtkSetClampMacro(ARAPIterations, int, 0, VTK_INT_MAX);
+  vtkSetClampMacro(ARAPIterations, int, 0, 10000);
   vtkGetMacro(ARAPIterations, int);
   vtkSetClampMacro(Convergence, double, 0.0, 1.0);
   vtkGetMacro(Convergence, double);
-  vtkSetMacro(Dragging, vtkTypeBool);
+
+  /**
+   * As-rigid-as-possible mode: a landmark is being dragged. Meanwhile each update runs at most
+   * DragARAPIterations (2); turning it off marks the warp modified, and the next update settles
+   * the shape: ARAPIterations in full, without the Convergence test.
+   */
+  void SetDragging(vtkTypeBool dragging);
   vtkGetMacro(Dragging, vtkTypeBool);
   vtkBooleanMacro(Dragging, vtkTypeBool);
-  vtkSetClampMacro(DragARAPIterations, int, 1, VTK_INT_MAX);
+  vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
   vtkGetMacro(DragARAPIterations, int);
   ///@}
 
-  ///@{
   /**
-   * Explicit mode: the smooth normals' support as a fraction of the diagonal (0.05), and the
-   * reference-rotate-solve passes (1). Implicit mode: the rigid step after the linear solve
-   * (on).
+   * @name Solver
    */
-  vtkSetClampMacro(NormalSmoothingRadius, double, 1e-6, 1.0);
-  vtkGetMacro(NormalSmoothingRadius, double);
-  vtkSetClampMacro(NumberOfIterations, int, 1, 1000);
-  vtkGetMacro(NumberOfIterations, int);
-  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /**
-   * Binding, in fractions of the input's diagonal: a landmark farther than BindingTolerance
-   * (0.01) from the surface warns, one farther than MaximumBindingDistance (0.1) is an error.
-   */
-  vtkSetClampMacro(BindingTolerance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(BindingTolerance, double);
-  vtkSetClampMacro(MaximumBindingDistance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumBindingDistance, double);
-  ///@}
-
-  ///@{
-  /** Points at the same position, up to rounding, are one surface vertex (on). */
-  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
-  ///@}
-
   ///@{
   /** The sparse solver: CHOLMOD (the default where built) or Eigen's SimplicialLDLT. */
   vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_SIMPLICIAL_LDLT);
   vtkGetMacro(Solver, int);
   ///@}
 
+  /**
+   * @name Results of the last update
+   */
   ///@{
   /**
-   * Facts of the last update: the landmarks, the vertices warped (the components holding
-   * landmarks), the factorizations so far, the as-rigid-as-possible iterations and energy,
-   * the largest and root-mean-square distance of a landmark from its target (mesh units), and
-   * the seconds spent binding the landmarks, setting up (region and factorization) and solving.
+   * The landmarks, the vertices warped (the components holding landmarks), the factorizations
+   * so far, the as-rigid-as-possible iterations and energy, the largest and root-mean-square
+   * distance of a landmark from its target (mesh units), and the seconds spent binding the
+   * landmarks, setting up (region and factorization) and solving.
    */
   vtkGetMacro(NumberOfLandmarks, int);
-  vtkGetMacro(NumberOfWarpedVertices, int);
-  vtkGetMacro(NumberOfFactorizations, int);
-  vtkGetMacro(NumberOfARAPIterations, int);
-  vtkGetMacro(ARAPEnergy, double);
+  int GetNumberOfWarpedVertices();
+  int GetNumberOfFactorizations();
+  int GetNumberOfARAPIterations();
+  double GetARAPEnergy();
   vtkGetMacro(MaximumLandmarkDistance, double);
   vtkGetMacro(RMSLandmarkDistance, double);
-  vtkGetMacro(BindingTime, double);
-  vtkGetMacro(SetupTime, double);
-  vtkGetMacro(SolveTime, double);
+  double GetBindingTime();
+  double GetSetupTime();
+  double GetSolveTime();
   ///@}
 
   /** Includes the landmarks' modification times. */
@@ -224,16 +233,12 @@ private:
   vtkLaplacianLandmarkWarp(const vtkLaplacianLandmarkWarp&) = delete;
   void operator=(const vtkLaplacianLandmarkWarp&) = delete;
 
-  // RequestData's stages; each reports its own error and returns false on failure.
+  // The landmarks of port 1 or the vtkPoints; false, with the error reported, if they are not
+  // usable.
   bool FindLandmarks(vtkPoints*& sources, vtkPoints*& targets);
-  bool UpdateSurface(vtkPolyData* input);
-  bool BindLandmarks(vtkPoints* sources);
-  bool UpdateSystem(vtkPolyData* input);
-  bool Solve(vtkPoints* targets);
-  void WriteOutput(vtkPolyData* input, vtkPolyData* output, vtkPoints* targets);
-  vtkLaplacianSolverOptions SolverOptions() const;
-  // Reports a non-empty error (and sets the error code); true when there is none.
-  bool Check(const std::string& error);
+  LaplacianEditing::Pipeline::SolverSettings Settings(double diagonal) const;
+  // After a solve: the warning for an exact fit that missed, and the landmarks' misses.
+  void ReportFit(vtkPolyData* output, vtkPoints* targets);
 
   vtkPoints* SourceLandmarks = nullptr;
   vtkPoints* TargetLandmarks = nullptr;
@@ -246,7 +251,7 @@ private:
   double Convergence = 1e-4;
   vtkTypeBool Dragging = 0;
   int DragARAPIterations = 2;
-  double NormalSmoothingRadius = 0.05;
+  double NormalSmoothingRadius = 0.0;
   int NumberOfIterations = 1;
   vtkTypeBool PreserveDetailScale = 1;
   double BindingTolerance = 0.01;
@@ -255,15 +260,8 @@ private:
   int Solver = SOLVER_CHOLMOD;
 
   int NumberOfLandmarks = 0;
-  int NumberOfWarpedVertices = 0;
-  int NumberOfFactorizations = 0;
-  int NumberOfARAPIterations = 0;
-  double ARAPEnergy = 0.0;
   double MaximumLandmarkDistance = 0.0;
   double RMSLandmarkDistance = 0.0;
-  double BindingTime = 0.0;
-  double SetupTime = 0.0;
-  double SolveTime = 0.0;
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

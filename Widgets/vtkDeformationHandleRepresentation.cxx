@@ -6,9 +6,8 @@
 #include "vtkCamera.h"
 #include "vtkCellPicker.h"
 #include "vtkCommand.h"
-#include "vtkDeformationHandlePreview.h"
 #include "vtkInteractorObserver.h"
-#include "vtkLaplacianDeformationFilter.h"
+#include "HandleMotion.h"
 #include "vtkLineSource.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -30,8 +29,9 @@
 
 vtkStandardNewMacro(vtkDeformationHandleRepresentation);
 
+namespace lep = LaplacianEditing::Pipeline;
+
 vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
-  : Preview(new vtkDeformationHandlePreview)
 {
   this->InteractionState = Outside;
   this->HandleProperty = vtkProperty::New();
@@ -88,47 +88,8 @@ vtkDeformationHandleRepresentation::vtkDeformationHandleRepresentation()
 
 vtkDeformationHandleRepresentation::~vtkDeformationHandleRepresentation()
 {
-  this->Preview->Hide();
-  this->SetPreviewFilter(nullptr);
   this->HandleProperty->Delete();
   this->SelectedHandleProperty->Delete();
-}
-
-vtkCxxSetObjectMacro(vtkDeformationHandleRepresentation, PreviewFilter, vtkLaplacianDeformationFilter);
-
-void vtkDeformationHandleRepresentation::SetPreviewing(vtkTypeBool previewing)
-{
-  if (this->Previewing != previewing)
-  {
-    this->Previewing = previewing;
-    this->UpdatePreview();
-    this->Modified();
-  }
-}
-
-bool vtkDeformationHandleRepresentation::IsPreviewShown() const
-{
-  return this->Preview->IsShown();
-}
-
-void vtkDeformationHandleRepresentation::SetVisibility(vtkTypeBool visible)
-{
-  this->Superclass::SetVisibility(visible);
-  this->UpdatePreview();
-}
-
-void vtkDeformationHandleRepresentation::UpdatePreview()
-{
-  // The parts are drawn in the representation's passes: a hidden one previews nothing, so that
-  // the output's actor stays.
-  if (this->Previewing && this->PreviewFilter && this->Renderer && this->GetVisibility())
-  {
-    this->Preview->Show(this->Renderer, this->PreviewFilter, this->Translation, this->RotationAngles);
-  }
-  else
-  {
-    this->Preview->Hide();
-  }
 }
 
 vtkProperty* vtkDeformationHandleRepresentation::GetRingProperty(int axis)
@@ -187,18 +148,8 @@ void vtkDeformationHandleRepresentation::SetTranslation(double x, double y, doub
 
 void vtkDeformationHandleRepresentation::SetRotationAngles(double x, double y, double z)
 {
-  vtkNew<vtkTransform> rotation;
-  rotation->PostMultiply(); // as the filter's HandleRotation: about x, then y, then z
-  rotation->RotateX(x);
-  rotation->RotateY(y);
-  rotation->RotateZ(z);
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Rotation[r][c] = rotation->GetMatrix()->GetElement(r, c);
-    }
-  }
+  const double angles[3] = { x, y, z };
+  lep::HandleMotion::RotationMatrix(angles, this->Rotation);
   this->UpdateTransform();
 }
 
@@ -211,23 +162,7 @@ void vtkDeformationHandleRepresentation::ResetTransform()
 
 void vtkDeformationHandleRepresentation::UpdateTransform()
 {
-  // The angles of R = Rz(c) Ry(b) Rx(a); at b = +-90 degrees only a - c or a + c is defined,
-  // and a = 0 is chosen.
-  const double(&m)[3][3] = this->Rotation;
-  const double b = std::asin(std::max(-1.0, std::min(1.0, -m[2][0])));
-  double a = 0.0, c = 0.0;
-  if (std::abs(m[2][0]) < 1.0 - 1e-12)
-  {
-    a = std::atan2(m[2][1], m[2][2]);
-    c = std::atan2(m[1][0], m[0][0]);
-  }
-  else
-  {
-    c = std::atan2(-m[0][1], m[1][1]);
-  }
-  this->RotationAngles[0] = vtkMath::DegreesFromRadians(a);
-  this->RotationAngles[1] = vtkMath::DegreesFromRadians(b);
-  this->RotationAngles[2] = vtkMath::DegreesFromRadians(c);
+  lep::HandleMotion::Angles(this->Rotation, this->RotationAngles);
 
   // x' = R (x - c) + c + t
   vtkNew<vtkMatrix4x4> matrix;
@@ -243,10 +178,6 @@ void vtkDeformationHandleRepresentation::UpdateTransform()
   }
   this->Transform->SetMatrix(matrix);
   this->Modified();
-  if (this->Previewing)
-  {
-    this->UpdatePreview();
-  }
 }
 
 void vtkDeformationHandleRepresentation::GetCurrentCenter(double center[3])
@@ -641,17 +572,15 @@ int vtkDeformationHandleRepresentation::RenderTranslucentPolygonalGeometry(vtkVi
   return this->RenderActors(&vtkProp::RenderTranslucentPolygonalGeometry, viewport);
 }
 
-std::array<vtkActor*, 9> vtkDeformationHandleRepresentation::Actors()
+std::array<vtkActor*, 7> vtkDeformationHandleRepresentation::Actors()
 {
-  const std::array<vtkActor*, 2> preview = this->Preview->Actors();
   return { this->RingActors[AxisX], this->RingActors[AxisY], this->RingActors[AxisZ],
-    this->RingActors[ViewAxis], this->HandleActor, this->ROIActor, this->AxisActor, preview[0],
-    preview[1] };
+    this->RingActors[ViewAxis], this->HandleActor, this->ROIActor, this->AxisActor };
 }
 
 vtkTypeBool vtkDeformationHandleRepresentation::HasTranslucentPolygonalGeometry()
 {
-  const std::array<vtkActor*, 9> actors = this->Actors();
+  const std::array<vtkActor*, 7> actors = this->Actors();
   return std::any_of(actors.begin(), actors.end(),
     [](vtkActor* actor) { return actor->GetVisibility() && actor->HasTranslucentPolygonalGeometry(); });
 }
@@ -669,7 +598,4 @@ void vtkDeformationHandleRepresentation::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "HandleProperty: " << this->HandleProperty << "\n";
   os << indent << "SelectedHandleProperty: " << this->SelectedHandleProperty << "\n";
   os << indent << "RotationAxis: " << this->RotationAxis << "\n";
-  os << indent << "PreviewFilter: " << this->PreviewFilter << "\n";
-  os << indent << "Previewing: " << (this->Previewing ? "On" : "Off")
-     << (this->Preview->IsShown() ? " (shown)" : "") << "\n";
 }

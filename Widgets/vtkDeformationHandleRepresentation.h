@@ -18,28 +18,22 @@
  * ResizingHandle set the radii from the distance between the handle centre and the cursor, in
  * the view plane.
  *
- * Drag preview: with a PreviewFilter and Previewing on, every change of the translation or
- * rotation shows the filter's preview of that motion (PreviewHandleMotion) in place of the
- * actor that draws the filter's output, without updating the pipeline; turning Previewing off
- * puts that actor back (see vtkDeformationHandlePreview). ParaView's panel uses it to drag
- * large surfaces, and updates the pipeline once on release.
+ * The representation knows nothing of the filter, as VTK's representations know no algorithm:
+ * vtkDeformationHandleWidget pairs its transform with the filter and draws the drag preview.
  *
  * @sa vtkDeformationHandleWidget vtkLaplacianDeformationFilter
  */
 #ifndef vtkDeformationHandleRepresentation_h
 #define vtkDeformationHandleRepresentation_h
 
-#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkLaplacianEditingWidgetsModule.h" // for export macro
 #include "vtkNew.h"                           // for vtkNew
 #include "vtkWidgetRepresentation.h"
 
-#include <array>  // for std::array
-#include <memory> // for std::unique_ptr
+#include <array> // for std::array
 
 class vtkActor;
 class vtkCellPicker;
-class vtkDeformationHandlePreview;
-class vtkLaplacianDeformationFilter;
 class vtkLineSource;
 class vtkPolyDataMapper;
 class vtkProperty;
@@ -48,7 +42,7 @@ class vtkSphereSource;
 class vtkTransform;
 class vtkTubeFilter;
 
-class VTKLAPLACIANEDITING_EXPORT vtkDeformationHandleRepresentation
+class VTKLAPLACIANEDITINGWIDGETS_EXPORT vtkDeformationHandleRepresentation
   : public vtkWidgetRepresentation
 {
 public:
@@ -121,23 +115,6 @@ public:
    * Back to the rest pose: identity transform.
    */
   void ResetTransform();
-
-  ///@{
-  /**
-   * The drag preview (see the class description): the filter whose edit it previews, and
-   * whether it shows now. Default none, off.
-   */
-  void SetPreviewFilter(vtkLaplacianDeformationFilter* filter);
-  vtkGetObjectMacro(PreviewFilter, vtkLaplacianDeformationFilter);
-  void SetPreviewing(vtkTypeBool previewing);
-  vtkGetMacro(Previewing, vtkTypeBool);
-  vtkBooleanMacro(Previewing, vtkTypeBool);
-  /** Whether the preview shows now (the filter could preview, and an actor showed its output). */
-  bool IsPreviewShown() const;
-  ///@}
-
-  /** A hidden representation shows no preview. */
-  void SetVisibility(vtkTypeBool visible) override;
 
   ///@{
   /**
@@ -225,10 +202,8 @@ protected:
   // frame axis when constrained), and the turn of a ring about `center`.
   void Translate(const double world[3]);
   void Rotate(const double eventPosition[2], const double center[3]);
-  // Every actor, the rings first, the preview's parts last.
-  std::array<vtkActor*, 9> Actors();
-  // Shows or hides the preview as Previewing says, for the current motion.
-  void UpdatePreview();
+  // Every actor, the rings first.
+  std::array<vtkActor*, 7> Actors();
   // Renders the visible actors with `render` (an opaque or translucent pass).
   int RenderActors(int (vtkProp::*render)(vtkViewport*), vtkViewport* viewport);
 
@@ -273,9 +248,6 @@ protected:
   vtkProperty* HandleProperty;
   vtkProperty* SelectedHandleProperty;
   vtkNew<vtkProperty> RingProperties[4];
-  vtkLaplacianDeformationFilter* PreviewFilter = nullptr;
-  vtkTypeBool Previewing = 0;
-  std::unique_ptr<vtkDeformationHandlePreview> Preview;
 
 private:
   vtkDeformationHandleRepresentation(const vtkDeformationHandleRepresentation&) = delete;

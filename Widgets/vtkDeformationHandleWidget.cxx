@@ -1,7 +1,9 @@
 #include "vtkDeformationHandleWidget.h"
 
+#include "PreviewActors.h"
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkLaplacianDeformationFilter.h"
+#include "vtkLaplacianDragPreview.h"
 
 #include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
@@ -32,9 +34,13 @@ vtkStandardNewMacro(vtkDeformationHandleWidget);
 struct vtkDeformationHandleWidget::vtkInternals
 {
   vtkNew<vtkCellPicker> SurfacePicker;
-  // The representation whose PlaceWidgetEvent reaches the filter, and the observer's tag.
+  // The representation whose PlaceWidgetEvent reaches the filter and whose changes the preview
+  // follows, and the observers' tags.
   vtkWeakPointer<vtkWidgetRepresentation> ObservedRepresentation;
-  unsigned long PlaceObserver = 0;
+  unsigned long RepresentationObservers[2] = { 0, 0 };
+  // The drag preview: its solve and its actors.
+  vtkNew<vtkLaplacianDragPreview> Preview;
+  LaplacianEditing::Widgets::PreviewActors PreviewActors;
   // The filter's commit and undo events.
   unsigned long CommitObservers[2] = { 0, 0 };
   // A press outside the handle places the handle if it is released where it went down (within
@@ -108,9 +114,11 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
 {
   this->Internals->StopWatchingClicks();
+  this->Internals->PreviewActors.Hide();
   if (vtkWidgetRepresentation* observed = this->Internals->ObservedRepresentation)
   {
-    observed->RemoveObserver(this->Internals->PlaceObserver);
+    observed->RemoveObserver(this->Internals->RepresentationObservers[0]);
+    observed->RemoveObserver(this->Internals->RepresentationObservers[1]);
   }
   this->SetDeformationFilter(nullptr);
   this->SetSurfaceProp(nullptr);
@@ -140,16 +148,21 @@ void vtkDeformationHandleWidget::PairRepresentation()
   vtkInternals& internals = *this->Internals;
   if (internals.ObservedRepresentation != this->WidgetRep)
   {
+    internals.PreviewActors.Hide();
     if (internals.ObservedRepresentation)
     {
-      internals.ObservedRepresentation->RemoveObserver(internals.PlaceObserver);
+      internals.ObservedRepresentation->RemoveObserver(internals.RepresentationObservers[0]);
+      internals.ObservedRepresentation->RemoveObserver(internals.RepresentationObservers[1]);
     }
     internals.ObservedRepresentation = this->WidgetRep;
     if (this->WidgetRep)
     {
       // rep->PlaceWidget(bounds) moves and sizes the handle: the filter must edit there too.
-      internals.PlaceObserver = this->WidgetRep->AddObserver(
+      internals.RepresentationObservers[0] = this->WidgetRep->AddObserver(
         vtkCommand::PlaceWidgetEvent, this, &vtkDeformationHandleWidget::PushToFilter);
+      // A new motion (a drag, or ParaView's properties), or the representation hidden.
+      internals.RepresentationObservers[1] = this->WidgetRep->AddObserver(
+        vtkCommand::ModifiedEvent, this, &vtkDeformationHandleWidget::UpdatePreview);
     }
   }
   vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
@@ -172,6 +185,53 @@ void vtkDeformationHandleWidget::PairRepresentation()
     rep->SetCenter(center);
   }
   filter->SetHandleTransform(this->HandleGroup, rep->GetTransform());
+}
+
+void vtkDeformationHandleWidget::SetPreviewFilter(vtkLaplacianDeformationFilter* filter)
+{
+  if (filter != this->Internals->Preview->GetFilter())
+  {
+    this->Internals->PreviewActors.Hide();
+    this->Internals->Preview->SetFilter(filter);
+    this->UpdatePreview();
+    this->Modified();
+  }
+}
+
+vtkLaplacianDeformationFilter* vtkDeformationHandleWidget::GetPreviewFilter()
+{
+  return this->Internals->Preview->GetFilter();
+}
+
+void vtkDeformationHandleWidget::SetPreviewing(vtkTypeBool previewing)
+{
+  if (this->Previewing != previewing)
+  {
+    this->Previewing = previewing;
+    this->UpdatePreview();
+    this->Modified();
+  }
+}
+
+int vtkDeformationHandleWidget::IsPreviewShown()
+{
+  return this->Internals->PreviewActors.IsShown() ? 1 : 0;
+}
+
+void vtkDeformationHandleWidget::UpdatePreview()
+{
+  // A hidden representation previews nothing, so that the output's actor stays.
+  vtkInternals& internals = *this->Internals;
+  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
+  if (this->Previewing && rep && rep->GetRenderer() && rep->GetVisibility())
+  {
+    internals.PreviewActors.Show(
+      rep->GetRenderer(), internals.Preview, rep->GetTranslation(), rep->GetRotationAngles());
+  }
+  else
+  {
+    internals.PreviewActors.Hide();
+  }
 }
 
 void vtkDeformationHandleWidget::SetHandleGroup(int group)
@@ -517,4 +577,7 @@ void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HandleGroup: " << this->HandleGroup << "\n";
   os << indent << "SurfaceProp: " << this->SurfaceProp << "\n";
   os << indent << "Interacting: " << this->Interacting << "\n";
+  os << indent << "PreviewFilter: " << this->GetPreviewFilter() << "\n";
+  os << indent << "Previewing: " << (this->Previewing ? "On" : "Off")
+     << (this->IsPreviewShown() ? " (shown)" : "") << "\n";
 }

@@ -43,6 +43,13 @@
  * pickable in applications that turn the manager on. vtkDeformationHandleRepresentation::
  * PlaceWidget(bounds) puts the handle in the centre of the bounds; the paired filter follows.
  *
+ * Drag preview: with a preview filter (SetPreviewFilter, usually the paired filter) and
+ * Previewing on, every change of the representation's translation or rotation shows the
+ * filter's preview of that motion (vtkLaplacianDragPreview) in place of the actor that draws the
+ * filter's output, without updating the pipeline; turning Previewing off, or hiding the
+ * representation, puts that actor back. ParaView's panel uses it to drag large surfaces, and
+ * updates the pipeline once on release.
+ *
  * ResetHandle() undoes the current edit, CommitEdit() makes the edited surface the rest surface
  * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
  * InteractionEvent and EndInteractionEvent.
@@ -60,7 +67,7 @@
 #define vtkDeformationHandleWidget_h
 
 #include "vtkAbstractWidget.h"
-#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkLaplacianEditingWidgetsModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
@@ -68,7 +75,7 @@ class vtkDeformationHandleRepresentation;
 class vtkLaplacianDeformationFilter;
 class vtkProp;
 
-class VTKLAPLACIANEDITING_EXPORT vtkDeformationHandleWidget : public vtkAbstractWidget
+class VTKLAPLACIANEDITINGWIDGETS_EXPORT vtkDeformationHandleWidget : public vtkAbstractWidget
 {
 public:
   static vtkDeformationHandleWidget* New();
@@ -108,6 +115,20 @@ public:
    * identity transform.
    */
   void PlaceHandle(const double point[3]);
+
+  ///@{
+  /**
+   * The drag preview (see the class description): the filter whose edit it previews, and
+   * whether it shows. Default none, off.
+   */
+  void SetPreviewFilter(vtkLaplacianDeformationFilter* filter);
+  vtkLaplacianDeformationFilter* GetPreviewFilter();
+  void SetPreviewing(vtkTypeBool previewing);
+  vtkGetMacro(Previewing, vtkTypeBool);
+  vtkBooleanMacro(Previewing, vtkTypeBool);
+  /** Whether the preview shows now (the filter could preview, and an actor showed its output). */
+  int IsPreviewShown();
+  ///@}
 
   /**
    * Undo the current edit: the identity transform.
@@ -154,13 +175,16 @@ protected:
   // where it was (undo).
   void RestAtCurrentCenter();
   // The filter's handle and transform to the representation, and the representation's
-  // PlaceWidgetEvent to the filter.
+  // PlaceWidgetEvent and changes (for the preview) to the widget.
   void PairRepresentation();
+  // Shows or hides the drag preview as Previewing says, for the representation's motion.
+  void UpdatePreview();
 
   vtkLaplacianDeformationFilter* DeformationFilter = nullptr;
   vtkProp* SurfaceProp = nullptr;
   int HandleGroup = 0;
   bool Interacting = false;
+  vtkTypeBool Previewing = 0;
 
 private:
   vtkDeformationHandleWidget(const vtkDeformationHandleWidget&) = delete;

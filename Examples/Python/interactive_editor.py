@@ -37,6 +37,7 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkInteractorEventRecorder, v
                                          vtkTextActor, vtkWindowToImageFilter)
 
 import laplacianediting
+from bumpy_plane import bumpy_plane
 
 HELP = ("mouse: drag = orbit | click surface = place handle (commits the edit) | drag sphere = move\n"
         "       (Ctrl: one axis) | drag ring = turn | Shift+drag sphere = region | Shift+drag ring = handle\n"
@@ -141,8 +142,7 @@ def make_filter(mesh, mode):
         deform.SetHandleRadius(0.03)
         deform.SetROIRadius(0.15)
     else:
-        plane = laplacianediting.vtkBumpyPlaneSource()
-        deform.SetInputConnection(plane.GetOutputPort())
+        deform.SetInputData(bumpy_plane())
         deform.SetHandleCenter(0.8, 0.5, 0.0)
         deform.SetHandleRadius(0.08)
         deform.SetROIRadius(0.6)

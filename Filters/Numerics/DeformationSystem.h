@@ -132,7 +132,6 @@ public:
   /// Squared constraint weight of each ROI vertex (0 for free vertices).
   const Eigen::VectorXd& GetSquaredWeights() const { return this->SquaredWeights; }
   /// Handle group of each ROI vertex, -1 for others.
-  const std::vector<int>& GetHandleGroups() const { return this->HandleGroups; }
   int GetNumberOfHandleGroups() const { return this->NumberOfHandleGroups; }
   int GetNumberOfUnknowns() const { return static_cast<int>(this->RestPositions.rows()); }
   const SparseCholesky& GetFactor() const { return this->Factor; }

@@ -1,6 +1,6 @@
 // A sparse factorization spread across processes, for regions whose factor does not fit one.
 //
-// The core knows no MPI: an adapter that does (vtkLaplacianMumpsSolver, over MUMPS) implements
+// The core knows no MPI: an adapter that does (MumpsSolver, over MUMPS) implements
 // this interface on the process that solves, and keeps the other processes working alongside
 // it in each call. SparseCholesky uses it when asked to (SolverBackend::Distributed), or when
 // CHOLMOD predicts a factor above the memory limit.

@@ -137,7 +137,6 @@ public:
   const ArapResult& GetLastArapResult() const { return this->LastArap; }
 
   const EditRegion& GetRegion() const { return this->Region; }
-  bool HasRegion() const { return this->Ready; }
 
   /// Numeric factorizations since construction.
   int GetNumberOfFactorizations() const { return this->NumberOfFactorizations; }

@@ -122,7 +122,6 @@ void SmoothNormals::Build(const SurfaceMesh& mesh, const std::vector<int>& verti
   double radius, DistanceMethod method, const ParallelFor& loop)
 {
   this->Radius = radius;
-  this->Method = method;
   const int n = static_cast<int>(vertices.size());
   const double blendRadius = 0.5 * radius;
   std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);

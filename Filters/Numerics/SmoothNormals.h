@@ -39,7 +39,6 @@ public:
   Positions Compute(const Positions& roiPositions, const ParallelFor& loop = SerialFor) const;
 
   double GetRadius() const { return this->Radius; }
-  DistanceMethod GetDistanceMethod() const { return this->Method; }
 
 private:
   // The triangles around the support vertices, whose corners join the extended index (each
@@ -48,7 +47,6 @@ private:
     const SurfaceMesh& mesh, std::vector<int>& extended, std::vector<int>& extendedVertices);
 
   double Radius = 0.0;
-  DistanceMethod Method = DistanceMethod::FastMarching;
   // Rows: samples; columns: support vertices (within the radius of a sample).
   Eigen::SparseMatrix<double, Eigen::RowMajor> SampleWeights;
   // Rows: ROI vertices; columns: samples within half the radius.

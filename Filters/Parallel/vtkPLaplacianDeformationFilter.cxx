@@ -9,12 +9,13 @@
 #include "vtkDataArray.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkLaplacianPieceEdit.h"
+#include "EditPipeline.h"
+#include "PieceEdit.h"
 #ifdef LAPLACIAN_EDITING_HAS_MUMPS
-#include "vtkLaplacianMumpsSolver.h"
+#include "MumpsSolver.h"
 #endif
-#include "vtkLaplacianRegionSelector.h"
-#include "vtkLaplacianSurfaceAdapter.h"
+#include "RegionSelector.h"
+#include "SurfaceAdapter.h"
 #include "vtkMath.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -28,14 +29,19 @@
 #include <vector>
 
 namespace le = LaplacianEditing;
+namespace lep = LaplacianEditing::Pipeline;
+#ifdef LAPLACIAN_EDITING_HAS_MUMPS
+using LaplacianEditing::Parallel::MumpsSolver;
+#endif
+using LaplacianEditing::Parallel::PieceEdit;
 
 vtkStandardNewMacro(vtkPLaplacianDeformationFilter);
 
 struct vtkPLaplacianDeformationFilter::vtkInternals
 {
   // The current reach and, on rank 0, the one the parts were gathered for.
-  vtkLaplacianSurfaceAdapter::Reach Reach;
-  vtkLaplacianSurfaceAdapter::Reach GatheredReach;
+  lep::Reach Reach;
+  lep::Reach GatheredReach;
   // This piece's selection labels and what they were made for (selection and piece times).
   vtkSmartPointer<vtkIntArray> PieceLabels;
   vtkMTimeType PieceLabelsKey[2] = { 0, 0 };
@@ -52,12 +58,12 @@ struct vtkPLaplacianDeformationFilter::vtkInternals
   unsigned long GatheredVersion = 0;
   // This piece's share of the edit and what it was shared for (WritePieces's header); rank 0:
   // the rows each piece's share needs.
-  vtkLaplacianPieceEdit Piece;
+  PieceEdit Piece;
   double SharedFor[4] = { -1.0, -1.0, -1.0, -1.0 };
   std::vector<std::vector<int>> PieceRows;
 #ifdef LAPLACIAN_EDITING_HAS_MUMPS
   // The processes' MUMPS, for the controller it was made for.
-  std::shared_ptr<vtkLaplacianMumpsSolver> Mumps;
+  std::shared_ptr<MumpsSolver> Mumps;
   vtkMultiProcessController* MumpsController = nullptr;
 #endif
 };
@@ -89,7 +95,7 @@ int vtkPLaplacianDeformationFilter::RequestData(
   vtkInternals& internals = *this->Internals;
   if (internals.MumpsController != this->Controller)
   {
-    internals.Mumps = vtkLaplacianMumpsSolver::New(this->Controller);
+    internals.Mumps = MumpsSolver::New(this->Controller);
     internals.MumpsController = this->Controller;
   }
 #endif
@@ -105,8 +111,7 @@ int vtkPLaplacianDeformationFilter::RequestData(
   this->UpdateGlobalReach(input, labels, selection != nullptr);
   if (this->GatherPieces(input, selection))
   {
-    vtkNew<vtkPolyData> unused; // the pieces are written from the edit's state
-    this->EditSurface(this->Internals->Gathered, unused);
+    this->EditSurface(this->Internals->Gathered, nullptr); // each rank writes its own piece
   }
 #ifdef LAPLACIAN_EDITING_HAS_MUMPS
   // The other processes factor and solve along with the first while it edits.
@@ -135,14 +140,6 @@ LaplacianEditing::DistributedSolver* vtkPLaplacianDeformationFilter::GetDistribu
 #endif
 }
 
-void vtkPLaplacianDeformationFilter::WriteOutput(vtkPolyData* rest, vtkPolyData* output)
-{
-  if (!this->Controller || this->Controller->GetNumberOfProcesses() < 2)
-  {
-    this->Superclass::WriteOutput(rest, output);
-  }
-}
-
 vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vtkSelection* selection)
 {
   vtkInternals& internals = *this->Internals;
@@ -154,11 +151,11 @@ vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vt
     return this->SelectionMode == SELECTION_ARRAY ? this->GetInputArrayToProcess(0, input) : nullptr;
   }
   const vtkMTimeType key[2] = { selection->GetMTime(),
-    vtkLaplacianSurfaceAdapter::GetContentTime(input) };
+    lep::SurfaceAdapter::GetContentTime(input) };
   if (!internals.PieceLabels || !std::equal(key, key + 2, internals.PieceLabelsKey))
   {
     std::copy(key, key + 2, internals.PieceLabelsKey);
-    internals.PieceLabels = vtkLaplacianRegionSelector::LabelSelection(
+    internals.PieceLabels = lep::RegionSelector::LabelSelection(
       input, selection, this->Controller->GetLocalProcessId());
     internals.PieceLabels->SetName(GatheredLabels);
   }
@@ -168,15 +165,15 @@ vtkDataArray* vtkPLaplacianDeformationFilter::LocalLabels(vtkPolyData* input, vt
 void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
   vtkPolyData* input, vtkDataArray* labels, bool fromSelection)
 {
-  // The serial filter's reach (vtkLaplacianRegionSelector::ComputeReach) over the whole
+  // The serial filter's reach (RegionSelector::ComputeReach) over the whole
   // surface, from a few numbers per rank and the labelled points, widened by two of the longest
   // edges: the polygons around the ring of fixed vertices then come along from every piece,
   // whichever holds them.
   const bool labelled = labels != nullptr || this->SelectionMode == SELECTION_ARRAY;
   double longestEdge = 0.0;
   double extent = this->ReduceExtents(input, labelled, longestEdge);
-  vtkLaplacianSurfaceAdapter::Reach& reach = this->Internals->Reach;
-  reach = vtkLaplacianSurfaceAdapter::Reach();
+  lep::Reach& reach = this->Internals->Reach;
+  reach = lep::Reach();
   if (labelled)
   {
     extent = this->GatherSeeds(input, labels, reach.Seeds);
@@ -185,15 +182,10 @@ void vtkPLaplacianDeformationFilter::UpdateGlobalReach(
   {
     reach.Seeds.push_back({ this->HandleCenter[0], this->HandleCenter[1], this->HandleCenter[2] });
   }
-  if (reach.Seeds.empty() || extent < 0.0)
-  {
-    reach.Seeds.clear();
-    return; // nothing labelled, or no polygon: every piece goes, and the edit says why
-  }
+  // Nothing labelled, or no polygon: every piece goes whole, and the edit says why.
   const double growth = fromSelection ? this->AbsoluteRadius(this->ROIRadius) : 0.0;
-  reach.Margin =
-    vtkLaplacianRegionSelector::ReachMargin(this->RegionParameters(), labelled, extent, growth) +
-    2.0 * longestEdge;
+  lep::RegionSelector::SetMargin(
+    reach, this->RegionParameters(), labelled, extent, growth, 2.0 * longestEdge);
 }
 
 double vtkPLaplacianDeformationFilter::ReduceExtents(
@@ -212,7 +204,7 @@ double vtkPLaplacianDeformationFilter::ReduceExtents(
   }
   local[6] = LongestPolygonEdge(input);
   const vtkIdType nearest =
-    labelled ? -1 : vtkLaplacianSurfaceAdapter::FindNearestCorner(input, this->HandleCenter);
+    labelled ? -1 : lep::SurfaceAdapter::FindNearestCorner(input, this->HandleCenter);
   local[7] = nearest < 0
     ? VTK_DOUBLE_MIN
     : -std::sqrt(vtkMath::Distance2BetweenPoints(input->GetPoint(nearest), this->HandleCenter));
@@ -267,7 +259,7 @@ double vtkPLaplacianDeformationFilter::LongestPolygonEdge(vtkPolyData* input)
 {
   // One pass over the polygons, repeated only when the piece changes.
   vtkInternals& internals = *this->Internals;
-  const vtkMTimeType time = vtkLaplacianSurfaceAdapter::GetContentTime(input);
+  const vtkMTimeType time = lep::SurfaceAdapter::GetContentTime(input);
   if (time != internals.LongestEdgeTime)
   {
     double longest2 = 0.0;
@@ -292,13 +284,13 @@ double vtkPLaplacianDeformationFilter::LongestPolygonEdge(vtkPolyData* input)
 bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelection* selection)
 {
   vtkInternals& internals = *this->Internals;
-  const vtkLaplacianSurfaceAdapter::Reach& reach = internals.Reach;
+  const lep::Reach& reach = internals.Reach;
   // Each rank sends the part of its piece in reach; geometry travels only when some piece, the
   // selection or the reach changed.
   vtkMultiProcessController* controller = this->Controller;
   const int ranks = controller->GetNumberOfProcesses();
   const bool first = controller->GetLocalProcessId() == 0;
-  const double localTimes[2] = { static_cast<double>(vtkLaplacianSurfaceAdapter::GetContentTime(input)),
+  const double localTimes[2] = { static_cast<double>(lep::SurfaceAdapter::GetContentTime(input)),
     selection ? static_cast<double>(selection->GetMTime()) : 0.0 };
   std::vector<double> times(2 * ranks, 0.0);
   controller->Gather(localTimes, times.data(), 2, 0);
@@ -316,7 +308,7 @@ bool vtkPLaplacianDeformationFilter::GatherPieces(vtkPolyData* input, vtkSelecti
   {
     source->GetPointData()->AddArray(internals.PieceLabels);
   }
-  vtkSmartPointer<vtkPolyData> part = vtkLaplacianSurfaceAdapter::ExtractReach(source, reach);
+  vtkSmartPointer<vtkPolyData> part = lep::SurfaceAdapter::ExtractReach(source, reach);
   std::vector<vtkSmartPointer<vtkDataObject>> parts;
   controller->Gather(part, parts, 0);
   if (first)
@@ -366,15 +358,16 @@ void vtkPLaplacianDeformationFilter::WritePieces(vtkPolyData* input, vtkPolyData
   vtkInternals& internals = *this->Internals;
   vtkMultiProcessController* controller = this->Controller;
   const bool first = controller->GetLocalProcessId() == 0;
-  vtkLaplacianEditState edit;
+  const lep::EditPipeline& pipeline = this->GetEditPipeline();
+  const lep::EditState edit = pipeline.GetState();
   Eigen::VectorXd parameters;
   // Whether there is an edit, whether it is affine, what it was shared for, and the number of
   // the maps' entries.
   double header[5] = { 0.0, 0.0, 0.0, 0.0, 0.0 };
-  if (first && this->GetEditState(edit))
+  if (first && pipeline.HasSolved())
   {
     header[0] = 1.0;
-    header[1] = vtkLaplacianPieceEdit::GetAffineParameters(edit, parameters) ? 1.0 : 0.0;
+    header[1] = PieceEdit::GetAffineParameters(edit, parameters) ? 1.0 : 0.0;
     header[2] = static_cast<double>(edit.ModelVersion);
     header[3] = static_cast<double>(internals.GatheredVersion);
     header[4] = static_cast<double>(parameters.size());
@@ -396,10 +389,10 @@ void vtkPLaplacianDeformationFilter::WritePieces(vtkPolyData* input, vtkPolyData
   {
     for (int r = 1; r < controller->GetNumberOfProcesses(); ++r)
     {
-      const le::Positions rows = vtkLaplacianPieceEdit::GetRowPositions(edit, internals.PieceRows[r]);
+      const le::Positions rows = PieceEdit::GetRowPositions(edit, internals.PieceRows[r]);
       controller->Send(rows.data(), rows.size(), r, PositionsTag);
     }
-    positions = vtkLaplacianPieceEdit::GetRowPositions(edit, internals.Piece.GetRows());
+    positions = PieceEdit::GetRowPositions(edit, internals.Piece.GetRows());
   }
   else if (header[0] != 0.0)
   {
@@ -407,13 +400,13 @@ void vtkPLaplacianDeformationFilter::WritePieces(vtkPolyData* input, vtkPolyData
     controller->Receive(positions.data(), positions.size(), 0, PositionsTag);
   }
   output->ShallowCopy(input);
-  vtkLaplacianOutputEdit pieceEdit;
+  lep::OutputEdit pieceEdit;
   this->WriteEdit(
     input, output, internals.Piece.GetEdit(positions, pieceEdit) ? &pieceEdit : nullptr);
 }
 
 void vtkPLaplacianDeformationFilter::SharePieces(
-  const vtkLaplacianEditState& edit, bool edited, bool affine)
+  const lep::EditState& edit, bool edited, bool affine)
 {
   // The first rank cuts the edit of the gathered parts into one share per piece: the parts
   // follow each other in rank order, and carry their ids in the pieces.
@@ -429,11 +422,11 @@ void vtkPLaplacianDeformationFilter::SharePieces(
     if (!internals.Piece.Unpack(message))
     {
       vtkErrorMacro(<< "The first rank sent this piece a malformed share of the edit.");
-      internals.Piece = vtkLaplacianPieceEdit();
+      internals.Piece = PieceEdit();
     }
     return;
   }
-  vtkLaplacianPieceEdit::Range range;
+  PieceEdit::Range range;
   if (edited)
   {
     range.PointIds = internals.Gathered->GetPointData()->GetArray("vtkOriginalPointIds");
@@ -444,7 +437,7 @@ void vtkPLaplacianDeformationFilter::SharePieces(
   {
     range.NumberOfPoints = internals.PieceSizes[r];
     range.NumberOfCells = internals.PieceCellSizes[r];
-    vtkLaplacianPieceEdit piece;
+    PieceEdit piece;
     if (edited)
     {
       piece.Build(edit, range, affine);

@@ -11,7 +11,7 @@
  * caches the gathered part on the pieces' content, the selection and the reach, so a handle
  * move sends no geometry up.
  *
- * Once per region, each rank gets its share of the edit (vtkLaplacianPieceEdit): which of its
+ * Once per region, each rank gets its share of the edit (PieceEdit): which of its
  * points move and from which rows, and what refreshes its normals near the edit, across piece
  * seams, as the serial filter does. Where the edit is affine in the handle maps (RotationMode
  * None, or Implicit without PreserveDetailScale), a move broadcasts the maps' entries and every
@@ -23,7 +23,7 @@
  *
  * The first rank factors the region alone with CHOLMOD unless the factor would exceed
  * MaximumFactorMemory, or Solver is MUMPS: then, in a build with MUMPS, all ranks factor it
- * together (vtkLaplacianMumpsSolver), and each update's solves run on all of them.
+ * together (MumpsSolver), and each update's solves run on all of them.
  *
  * @sa vtkLaplacianDeformationFilter vtkMultiProcessController
  */
@@ -31,7 +31,7 @@
 #define vtkPLaplacianDeformationFilter_h
 
 #include "vtkLaplacianDeformationFilter.h"
-#include "vtkLaplacianEditingModule.h" // for export macro
+#include "vtkLaplacianEditingFiltersParallelModule.h" // for export macro
 #include "vtkSmartPointer.h"           // for vtkSmartPointer
 
 #include <array>  // for std::array
@@ -40,11 +40,17 @@
 
 class vtkDataArray;
 class vtkIntArray;
-struct vtkLaplacianEditState;
 class vtkMultiProcessController;
 class vtkSelection;
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+struct EditState;
+}
+}
 
-class VTKLAPLACIANEDITING_EXPORT vtkPLaplacianDeformationFilter
+class VTKLAPLACIANEDITINGFILTERSPARALLEL_EXPORT vtkPLaplacianDeformationFilter
   : public vtkLaplacianDeformationFilter
 {
 public:
@@ -71,8 +77,6 @@ protected:
   ~vtkPLaplacianDeformationFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // With several ranks, nothing: each writes its own piece (WritePieces).
-  void WriteOutput(vtkPolyData* rest, vtkPolyData* output) override;
   // MUMPS across the controller's processes, in a build with MUMPS under MPI.
   LaplacianEditing::DistributedSolver* GetDistributedSolver() override;
   // On the gathered surface, the labels each rank made on its piece.
@@ -102,7 +106,7 @@ private:
   // Every rank's output, from its share of the edit (collective).
   void WritePieces(vtkPolyData* input, vtkPolyData* output);
   // Rank 0 sends each rank its share of `edit` (an empty one without an edit).
-  void SharePieces(const vtkLaplacianEditState& edit, bool edited, bool affine);
+  void SharePieces(const LaplacianEditing::Pipeline::EditState& edit, bool edited, bool affine);
 
   // The reach, the piece's caches and, on rank 0, the gathered parts.
   struct vtkInternals;

@@ -2,7 +2,7 @@
 #ifndef FilterTestHelpers_h
 #define FilterTestHelpers_h
 
-#include "vtkBumpyPlaneSource.h"
+#include "BumpyPlane.h"
 #include "vtkLaplacianDeformationFilter.h"
 
 #include "vtkCallbackCommand.h"
@@ -41,10 +41,7 @@ private:
 
 inline vtkSmartPointer<vtkPolyData> BumpyPlane(int resolution = 60)
 {
-  vtkNew<vtkBumpyPlaneSource> source;
-  source->SetResolution(resolution);
-  source->Update();
-  return source->GetOutput();
+  return MakeBumpyPlane(resolution);
 }
 
 inline double Diagonal(vtkPolyData* mesh)

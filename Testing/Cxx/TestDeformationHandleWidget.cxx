@@ -72,10 +72,7 @@ struct Scene
 
   Scene()
   {
-    vtkNew<vtkBumpyPlaneSource> source;
-    source->SetResolution(60);
-    source->Update();
-    this->Rest = source->GetOutput();
+    this->Rest = MakeBumpyPlane(60);
     this->Filter->SetInputData(this->Rest);
     this->Filter->SetHandleCenter(0.5, 0.5, 0.0);
     this->Filter->SetHandleRadius(0.06);
@@ -916,10 +913,13 @@ double DifferingPixels(const std::vector<unsigned char>& a, const std::vector<un
 
 int PreviewDrawsWhatTheUpdateDraws()
 {
-  // A representation that previews the filter's edit, as ParaView's panel drives one: the
-  // motion set as properties, the pipeline left alone until the motion is applied.
+  // A widget that previews the filter's edit, as ParaView's panel drives one: not paired with
+  // the filter, the motion set as its representation's properties, the pipeline left alone
+  // until the motion is applied.
   Scene scene;
   vtkNew<vtkDeformationHandleRepresentation> rep;
+  vtkNew<vtkDeformationHandleWidget> widget;
+  widget->SetRepresentation(rep);
   rep->SetRenderer(scene.Renderer);
   rep->SetCenter(scene.Filter->GetHandleCenter());
   rep->SetHandleRadius(scene.Filter->GetHandleRadius());
@@ -933,22 +933,22 @@ int PreviewDrawsWhatTheUpdateDraws()
   scene.Filter->AddObserver(vtkCommand::EndEvent, counter);
   const std::vector<unsigned char> before = Frame(scene.Window);
 
-  rep->SetPreviewFilter(scene.Filter);
-  rep->PreviewingOn();
+  widget->SetPreviewFilter(scene.Filter);
+  widget->PreviewingOn();
   rep->SetTranslation(0.0, -0.05, 0.12);
   rep->SetRotationAngles(20.0, 0.0, 0.0);
-  Check(rep->IsPreviewShown(), "the preview shows");
+  Check(widget->IsPreviewShown(), "the preview shows");
   Check(!scene.SurfaceActor()->GetVisibility(), "the surface's actor is hidden while previewing");
   const std::vector<unsigned char> previewed = Frame(scene.Window);
   Check(updates == 0, "previewing updates nothing (" + std::to_string(updates) + " updates)");
   rep->VisibilityOff();
-  Check(!rep->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
+  Check(!widget->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
     "a hidden representation previews nothing");
   rep->VisibilityOn();
-  Check(rep->IsPreviewShown(), "shown again, it previews");
+  Check(widget->IsPreviewShown(), "shown again, it previews");
 
-  rep->PreviewingOff();
-  Check(!rep->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
+  widget->PreviewingOff();
+  Check(!widget->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
     "turning previewing off shows the surface's actor again");
   scene.Filter->SetHandleTranslation(rep->GetTranslation());
   scene.Filter->SetHandleRotation(rep->GetRotationAngles());

@@ -220,10 +220,9 @@ namespace
 // just outside the bump).
 double MeanDetailAngle(int mode, int iterations = 1, bool straighten = true, double* worst = nullptr)
 {
-  vtkNew<vtkBumpyPlaneSource> source;
-  source->SetResolution(80);
-  source->Update();
-  auto plane = WithSelection(source->GetOutput(),
+  BumpyPlaneShape shape;
+  shape.Resolution = 80;
+  auto plane = WithSelection(shape.Make(),
     [](const double p[3]) { return p[0] < 0.03 ? 0 : (p[0] > 0.97 ? 2 : 1); });
   auto filter = ArrayEdit(plane, mode);
   filter->SetNumberOfIterations(iterations);
@@ -236,14 +235,14 @@ double MeanDetailAngle(int mode, int iterations = 1, bool straighten = true, dou
   filter->Update();
   vtkPolyData* edited = filter->GetOutput();
 
-  const double bumpRadius = source->GetBumpRadius();
-  const int bumps = source->GetBumpsPerSide() * source->GetBumpsPerSide();
+  const double bumpRadius = shape.BumpRadius;
+  const int bumps = shape.BumpsPerSide * shape.BumpsPerSide;
   double sum = 0.0;
   double largest = 0.0;
   for (int b = 0; b < bumps; ++b)
   {
     double center[2];
-    source->GetBumpCenter(b, center);
+    shape.BumpCenter(b, center);
     vtkIdType apex = 0;
     double apexDistance = VTK_DOUBLE_MAX;
     std::vector<Eigen::Vector3d> base;

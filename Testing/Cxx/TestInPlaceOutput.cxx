@@ -4,6 +4,7 @@
 // handle's motion changed, its moving part is what an update of the same motion writes, and it
 // leaves the output alone.
 #include "FilterTestHelpers.h"
+#include "vtkLaplacianDragPreview.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -301,15 +302,18 @@ TEST(Preview, IsRefusedUnlessOnlyTheHandleMotionChanged)
 {
   auto input = SphereWithIds();
   auto filter = SphereEdit(input, vtkLaplacianDeformationFilter::ROTATION_NONE);
-  EXPECT_FALSE(filter->PreviewHandleMotion(0.01, 0, 0, 0, 0, 0)) << "before any update";
+  vtkNew<vtkLaplacianDragPreview> preview;
+  EXPECT_FALSE(preview->Update(0.01, 0, 0, 0, 0, 0)) << "without a filter";
+  preview->SetFilter(filter);
+  EXPECT_FALSE(preview->Update(0.01, 0, 0, 0, 0, 0)) << "before any update";
   filter->Update();
-  EXPECT_TRUE(filter->PreviewHandleMotion(0.01, 0, 0, 0, 0, 0));
+  EXPECT_TRUE(preview->Update(0.01, 0, 0, 0, 0, 0));
   filter->SetROIRadius(0.35);
-  EXPECT_FALSE(filter->PreviewHandleMotion(0.01, 0, 0, 0, 0, 0)) << "after a new ROI radius";
+  EXPECT_FALSE(preview->Update(0.01, 0, 0, 0, 0, 0)) << "after a new ROI radius";
   filter->Update();
-  EXPECT_TRUE(filter->PreviewHandleMotion(0.02, 0, 0, 0, 0, 0));
+  EXPECT_TRUE(preview->Update(0.02, 0, 0, 0, 0, 0));
   input->GetPoints()->Modified();
-  EXPECT_FALSE(filter->PreviewHandleMotion(0.02, 0, 0, 0, 0, 0)) << "after new input content";
+  EXPECT_FALSE(preview->Update(0.02, 0, 0, 0, 0, 0)) << "after new input content";
 }
 
 TEST(Preview, TheMovingPartIsWhatAnUpdateOfTheSameMotionWrites)
@@ -326,7 +330,9 @@ TEST(Preview, TheMovingPartIsWhatAnUpdateOfTheSameMotionWrites)
     const vtkMTimeType filterTime = filter->GetMTime();
     const vtkMTimeType outputTime = filter->GetOutput()->GetMTime();
     const double translation[3] = { 0.05, 0.02, 0.0 }, rotation[3] = { 0.0, 0.0, 20.0 };
-    ASSERT_TRUE(filter->PreviewHandleMotion(translation, rotation));
+    vtkNew<vtkLaplacianDragPreview> preview;
+    preview->SetFilter(filter);
+    ASSERT_TRUE(preview->Update(translation, rotation));
 
     // Neither the filter nor its output changed.
     EXPECT_EQ(filter->GetMTime(), filterTime);
@@ -334,8 +340,8 @@ TEST(Preview, TheMovingPartIsWhatAnUpdateOfTheSameMotionWrites)
     EXPECT_EQ(MaxPointDistance(filter->GetOutput(), before), 0.0);
 
     // Together, the parts hold each polygon once; the still part is at rest.
-    vtkPolyData* still = filter->GetPreviewStillPart();
-    vtkPolyData* moving = filter->GetPreviewMovingPart();
+    vtkPolyData* still = preview->GetStillPart();
+    vtkPolyData* moving = preview->GetMovingPart();
     EXPECT_EQ(still->GetNumberOfPolys() + moving->GetNumberOfPolys(), input->GetNumberOfPolys());
     EXPECT_GT(moving->GetNumberOfPolys(), 0);
     EXPECT_LT(moving->GetNumberOfPoints(), input->GetNumberOfPoints() / 4);

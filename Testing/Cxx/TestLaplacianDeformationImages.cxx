@@ -17,7 +17,7 @@
 #include "KnownWarps.h"
 #include "ReferenceEdits.h"
 
-#include "vtkBumpyPlaneSource.h"
+#include "BumpyPlane.h"
 #include "vtkLaplacianDeformationFilter.h"
 #include "vtkLaplacianLandmarkWarp.h"
 
@@ -66,10 +66,7 @@ Scene BumpyPlaneEdit(const std::string&)
 
 Scene Fig6Rotations(const std::string&)
 {
-  vtkNew<vtkBumpyPlaneSource> source;
-  source->Update();
-  auto plane = vtkSmartPointer<vtkPolyData>::New();
-  plane->ShallowCopy(source->GetOutput());
+  auto plane = MakeBumpyPlane();
   vtkNew<vtkIntArray> selection;
   selection->SetName("Selection");
   for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)

@@ -560,7 +560,7 @@ TEST(SparseCholesky, BlockOrderingsSolveTheCoupledSystem)
 namespace
 {
 // An in-process stand-in for the processes behind a DistributedSolver (the MPI one,
-// vtkLaplacianMumpsSolver, is tested under mpiexec in the ParaView stage): it records what it
+// MumpsSolver, is tested under mpiexec in the ParaView stage): it records what it
 // was asked to factor, so the test can check when SparseCholesky hands a factor over.
 struct RecordingDistributedSolver : DistributedSolver
 {

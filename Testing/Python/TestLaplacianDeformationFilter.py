@@ -1,5 +1,7 @@
 """The filter from Python: a real edit, the cache, pass-through and bad input."""
 import math
+import os
+import sys
 import unittest
 
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkIntArray
@@ -9,12 +11,8 @@ from vtkmodules.vtkCommonTransforms import vtkTransform
 
 import laplacianediting
 
-
-def bumpy_plane(resolution=50):
-    source = laplacianediting.vtkBumpyPlaneSource()
-    source.SetResolution(resolution)
-    source.Update()
-    return source.GetOutput()
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "Examples", "Python"))
+from bumpy_plane import bumpy_plane  # noqa: E402  (the examples' test shape)
 
 
 def plane_edit(mesh):
@@ -40,7 +38,7 @@ def catch_errors(vtk_object):
 
 class TestLaplacianDeformationFilter(unittest.TestCase):
     def test_edit_moves_handle_and_keeps_outside(self):
-        mesh = bumpy_plane()
+        mesh = bumpy_plane(50)
         deform = plane_edit(mesh)
         lift = vtkTransform()
         deform.SetHandleTransform(lift)
@@ -69,7 +67,7 @@ class TestLaplacianDeformationFilter(unittest.TestCase):
         self.assertGreater(deform.GetNumberOfROIVertices(), handles)
 
     def test_identity_reproduces_input(self):
-        mesh = bumpy_plane()
+        mesh = bumpy_plane(50)
         deform = plane_edit(mesh)
         deform.SetOperatorOrder(2)
         deform.SetLaplacianWeightsToCotangent()

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "vtkBumpyPlaneSource.h"
+#include "BumpyPlane.h"
 #include "vtkLaplacianDeformationFilter.h"
 
 namespace EditingScene
@@ -31,9 +31,8 @@ namespace EditingScene
 /// explicit detail rotations. Returns the unedited plane.
 inline vtkSmartPointer<vtkPolyData> SetUpBumpyPlaneEdit(vtkLaplacianDeformationFilter* filter)
 {
-  vtkNew<vtkBumpyPlaneSource> source;
-  source->Update();
-  filter->SetInputData(source->GetOutput());
+  vtkSmartPointer<vtkPolyData> plane = MakeBumpyPlane();
+  filter->SetInputData(plane);
   filter->SetHandleCenter(0.8, 0.5, 0.0);
   filter->SetHandleRadius(0.08);
   filter->SetROIRadius(0.6);
@@ -41,7 +40,7 @@ inline vtkSmartPointer<vtkPolyData> SetUpBumpyPlaneEdit(vtkLaplacianDeformationF
   vtkNew<vtkTransform> lift;
   lift->Translate(0.0, 0.0, 0.3);
   filter->SetHandleTransform(lift);
-  return source->GetOutput();
+  return plane;
 }
 
 /// A renderer showing `mesh` through a vtkPolyDataMapper with its default settings: the

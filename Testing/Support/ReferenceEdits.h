@@ -22,7 +22,7 @@
 #include "vtkDataArray.h"
 #include "vtkIntArray.h"
 #include "vtkLaplacianDeformationFilter.h"
-#include "vtkLaplacianSurfaceAdapter.h"
+#include "SurfaceAdapter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTransform.h"
@@ -279,7 +279,7 @@ struct Measured
       points[i] = le::Vector3(mesh->GetPoint(i));
     }
     std::vector<std::int64_t> offsets, connectivity;
-    vtkLaplacianSurfaceAdapter::GetPolygons(mesh, offsets, connectivity);
+    LaplacianEditing::Pipeline::SurfaceAdapter::GetPolygons(mesh, offsets, connectivity);
     this->Mesh = le::SurfaceMesh::FromPolygons(points, offsets, connectivity, false);
     for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)
     {

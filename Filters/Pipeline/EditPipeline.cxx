@@ -1,0 +1,278 @@
+#include "EditPipeline.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkErrorCode.h"
+#include "vtkPolyData.h"
+#include "vtkSMP.h"
+#include "vtkSMPTools.h"
+#include "vtkVersionMacros.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+}
+
+EditPipeline::EditPipeline(vtkAlgorithm* filter, std::function<void(unsigned long)> setErrorCode)
+  : Filter(filter)
+  , SetErrorCode(std::move(setErrorCode))
+{
+  this->Writer.SetFilter(filter);
+  // The core's per-move loops run on VTK's SMP backend. ParaView's VTK runs it on one thread
+  // unless told otherwise (VTK_SMP_BACKEND_IN_USE): the core's loops take VTK's thread pool
+  // there, which halves an ARAP drag's frame on two cores.
+  this->Editor.SetParallelFor([](int begin, int end, const std::function<void(int, int)>& body) {
+    auto run = [&] { vtkSMPTools::For(begin, end, [&](int first, int last) { body(first, last); }); };
+#if VTK_SMP_ENABLE_STDTHREAD && VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+    if (std::strcmp(vtkSMPTools::GetBackend(), "Sequential") == 0)
+    {
+      vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("STDThread") }, run);
+      return;
+    }
+#endif
+    run();
+  });
+}
+
+void EditPipeline::BeginUpdate()
+{
+  this->SetErrorCode(vtkErrorCode::NoError);
+  const int surfaceVertices = this->LastFacts.NumberOfSurfaceVertices;
+  this->LastFacts = Facts();
+  this->LastFacts.NumberOfSurfaceVertices = surfaceVertices;
+  this->Solved = false;
+  this->Previewed = false;
+}
+
+bool EditPipeline::Check(const std::string& error)
+{
+  if (error.empty())
+  {
+    return true;
+  }
+  vtkErrorWithObjectMacro(this->Filter, << error);
+  this->SetErrorCode(vtkErrorCode::UserError);
+  return false;
+}
+
+bool EditPipeline::Aborted(double progress)
+{
+  if (this->Filter->GetAbortExecute())
+  {
+    return true;
+  }
+  this->Filter->UpdateProgress(progress);
+  return false;
+}
+
+bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& source,
+  const SolverSettings& settings, bool merge, bool roles, bool colors)
+{
+  // Progress after each step that may take seconds (graph, region and its factor, rotation
+  // model and its factor); the abort flag is read between them.
+  this->Filter->UpdateProgress(0.1);
+  if (!this->UpdateSurface(rest, source.ComputeReach(rest), merge) || this->Aborted(0.3) ||
+    !this->UpdateRegion(rest, source, settings) || this->Aborted(0.6))
+  {
+    return false;
+  }
+  SolverSettings update = settings;
+  update.Settle = this->Settle;
+  this->Settle = false;
+  if (!this->UpdateRotationModel(update) || this->Aborted(0.9))
+  {
+    return false;
+  }
+  this->Solved = this->Solve(source);
+  if (this->Solved && output)
+  {
+    const Clock::time_point start = Clock::now();
+    const OutputEdit edit = this->GetEdit();
+    this->Write(rest, output, &edit, roles, colors);
+    this->LastFacts.SolveTime += SecondsSince(start);
+  }
+  this->Filter->UpdateProgress(1.0);
+  return this->Solved;
+}
+
+bool EditPipeline::UpdateSurface(vtkPolyData* rest, const Reach& reach, bool merge)
+{
+  const Clock::time_point start = Clock::now();
+  bool rebuilt = false;
+  const std::string error = this->Surface.Update(rest, merge, reach, rebuilt);
+  if (rebuilt)
+  {
+    // The limit is taken once per surface, so that a move never refactors for it.
+    this->Editor.SetMesh(this->Surface.GetMesh());
+    this->AvailableMemory = SolverSettings::AutomaticFactorLimit();
+    ++this->ModelVersion;
+  }
+  if (!this->Check(error))
+  {
+    return false;
+  }
+  if (rebuilt)
+  {
+    this->LastFacts.NumberOfSurfaceVertices = this->Surface.GetMesh()->GetNumberOfVertices();
+    this->LastFacts.TopologyTime = SecondsSince(start);
+  }
+  return true;
+}
+
+bool EditPipeline::UpdateRegion(vtkPolyData* rest, EditSource& source, const SolverSettings& settings)
+{
+  if (settings.Solver == static_cast<int>(SolverBackend::Distributed) && !settings.Distributed)
+  {
+    return this->Check("The MUMPS solver factors across MPI processes: it needs "
+                       "vtkPLaplacianDeformationFilter in an MPI run, in a build with MUMPS. Use "
+                       "CHOLMOD or SimplicialLDLT here.");
+  }
+  RegionChoice choice;
+  if (!this->Check(source.ChooseRegion(rest, this->Surface, choice)))
+  {
+    return false;
+  }
+  DeformationOptions system = settings.System(this->AvailableMemory);
+  system.Points = choice.Points;
+  system.PointsVersion = choice.PointsVersion;
+  system.PointWeight = choice.PointWeight;
+  const Clock::time_point start = Clock::now();
+  const EditStatus status = this->Editor.UpdateRegion(choice.Request, choice.Labels, system);
+  if (!this->Check(status.Ok() ? std::string() : "Cannot edit: " + status.Error + "."))
+  {
+    return false;
+  }
+  if (status.Work == RebuiltNothing)
+  {
+    return true;
+  }
+  ++this->ModelVersion;
+  this->LastFacts.SetupTime = SecondsSince(start);
+  const EditRegion& region = this->Editor.GetRegion();
+  this->Surface.IndexRegion(region);
+  this->Normals.Index(rest, this->Surface);
+  if (status.Work & RebuiltRegion)
+  {
+    source.RegionSelected(choice.Request, region, this->Surface);
+  }
+  return true;
+}
+
+bool EditPipeline::UpdateRotationModel(const SolverSettings& settings)
+{
+  this->Mode = static_cast<RotationMode>(settings.RotationMode);
+  const Clock::time_point start = Clock::now();
+  const EditStatus status =
+    this->Editor.UpdateRotationModel(settings.Rotation(this->Editor.GetRegion().Radius, this->Surface.GetScale()));
+  if (!this->Check(status.Ok() ? std::string() : "Cannot edit: " + status.Error + "."))
+  {
+    return false;
+  }
+  Facts& facts = this->LastFacts;
+  if (status.Work != RebuiltNothing)
+  {
+    ++this->ModelVersion;
+    facts.SetupTime += SecondsSince(start);
+    const bool firstOrderEnergy =
+      settings.RotationMode == static_cast<int>(RotationMode::AsRigidAsPossible) ||
+      (settings.RotationMode == static_cast<int>(RotationMode::Implicit) &&
+        settings.ImplicitFormulation == 0);
+    if (settings.OperatorOrder == 2 && firstOrderEnergy)
+    {
+      vtkWarningWithObjectMacro(this->Filter, << "OperatorOrder 2 has no effect in this rotation "
+        << "mode: its energy compares one-ring edges, a first-order measure. The bi-Laplacian "
+        << "applies in the None and Explicit modes and in the Paper implicit formulation.");
+    }
+  }
+  if (facts.SetupTime > 0.0)
+  {
+    facts.AnalysisTime = this->Editor.GetAnalysisSeconds();
+    facts.FactorizationTime = this->Editor.GetFactorizationSeconds();
+  }
+  return true;
+}
+
+bool EditPipeline::Solve(EditSource& source)
+{
+  const EditRegion& region = this->Editor.GetRegion();
+  EditMotions motions;
+  if (!this->Check(source.ChooseMotions(this->Surface, region, motions)))
+  {
+    return false;
+  }
+  this->Maps = std::move(motions.Maps);
+  const Clock::time_point start = Clock::now();
+  const EditStatus status = this->Editor.Solve(
+    this->Maps, this->Solution, motions.HasPoints ? &motions.Points : nullptr);
+  Facts& facts = this->LastFacts;
+  facts.SolveTime = SecondsSince(start);
+  facts.LargestPointMiss = this->Editor.GetLargestPointMiss();
+  if (this->Mode == RotationMode::AsRigidAsPossible)
+  {
+    facts.NumberOfARAPIterations = this->Editor.GetLastArapResult().Iterations;
+    facts.ARAPEnergy = this->Editor.GetLastArapResult().Energy;
+  }
+  if (!this->Check(status.Ok() ? std::string() : "Cannot edit: " + status.Error + "."))
+  {
+    return false;
+  }
+  facts.NumberOfROIVertices = region.GetNumberOfVertices();
+  facts.NumberOfHandleVertices = static_cast<int>(
+    std::count(region.Roles.begin(), region.Roles.end(), VertexRole::Handle));
+  return true;
+}
+
+bool EditPipeline::SolveDragStep(EditSource& source, SolverSettings settings)
+{
+  settings.Dragging = true;
+  settings.Settle = this->Settle;
+  if (!this->UpdateRotationModel(settings) || !this->Solve(source))
+  {
+    return false;
+  }
+  this->Previewed = true;
+  return true;
+}
+
+void EditPipeline::Write(
+  vtkPolyData* rest, vtkPolyData* output, const OutputEdit* edit, bool roles, bool colors)
+{
+  this->Writer.Write(rest, output, edit, roles, colors);
+}
+
+bool EditPipeline::SetDragging(bool dragging)
+{
+  this->Settle = !dragging;
+  return !dragging && !this->Previewed;
+}
+
+OutputEdit EditPipeline::GetEdit() const
+{
+  return this->Surface.GetEdit(this->Solution, &this->Normals, this->ModelVersion);
+}
+
+EditState EditPipeline::GetState() const
+{
+  EditState state;
+  state.Surface = &this->Surface;
+  state.Normals = &this->Normals;
+  state.Editor = &this->Editor;
+  state.Maps = &this->Maps;
+  state.Solution = &this->Solution;
+  state.ModelVersion = this->ModelVersion;
+  return state;
+}
+}
+}

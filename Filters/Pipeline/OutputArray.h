@@ -1,0 +1,90 @@
+// OutputArray: one array of a filter's output kept between updates: the rest array with some tuples written in place.
+//
+// A handle move changes the points of one region, the normals around it and nothing else, so
+// an update writes those tuples into a buffer it kept from an earlier update, after putting
+// back the rest values of the tuples that buffer's own last update wrote. A move then costs
+// what its region costs. A whole copy of the rest array is made only when the rest array
+// changed (a new input, a commit) or when every buffer is held by another object.
+//
+// Copy on write: a buffer that anyone else holds (a user's reference or shallow copy, a
+// rendering cache) is never written. A buffer is free when its only references are this
+// object's (and its vtkPoints') and those of the outputs of the filters connected to the
+// output, which the next pipeline update recomputes (the PipelineHolders function counts
+// them: ParaView puts a pass-through filter after every source). A consumer that keeps the previous output
+// elsewhere until it updates again (ParaView's representations) makes the updates alternate
+// between two buffers, each written in place; at most MaximumBuffers are kept, and one held
+// elsewhere beyond that is left to its holder.
+#ifndef LaplacianEditing_Pipeline_OutputArray_h
+#define LaplacianEditing_Pipeline_OutputArray_h
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+class vtkDataArray;
+class vtkObjectBase;
+class vtkPoints;
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+class OutputArray
+{
+public:
+  using Writer = std::function<void(vtkDataArray*)>;
+  /// How many references to `object` the outputs of the filters downstream hold, not counting
+  /// those through `ownPoints` (the buffer's vtkPoints, when `object` is its array).
+  using Holders = std::function<int(vtkObjectBase* object, vtkObjectBase* ownPoints)>;
+
+  /// The references that do not make a buffer shared; none by default.
+  void SetPipelineHolders(const Holders& holders) { this->PipelineHolders = holders; }
+
+  /// An array equal to `rest` except at the tuples `ids`, which `write` sets (all of them).
+  /// `key` names what `write` writes: a buffer whose last update had the same rest, ids and key
+  /// is returned untouched (not even Modified), held elsewhere or not, since it is not written.
+  /// With no ids, `rest` itself.
+  vtkDataArray* Update(
+    vtkDataArray* rest, const std::vector<vtkIdType>& ids, std::uint64_t key, const Writer& write);
+  /// The same for a point set's points.
+  vtkPoints* Update(
+    vtkPoints* rest, const std::vector<vtkIdType>& ids, std::uint64_t key, const Writer& write);
+
+  /// How many whole copies of a rest array the updates made.
+  vtkIdType GetNumberOfCopies() const { return this->Copies; }
+
+  static constexpr int MaximumBuffers = 3;
+
+private:
+  struct Buffer
+  {
+    vtkSmartPointer<vtkDataArray> Array;
+    vtkSmartPointer<vtkPoints> Points; // wraps Array when the rest is a vtkPoints
+    // What the buffer holds: the rest array it copied (compared, never dereferenced) at its
+    // modification time, the tuples its last update wrote, and that update's key.
+    const vtkDataArray* Source = nullptr;
+    vtkMTimeType SourceTime = 0;
+    std::vector<vtkIdType> Written;
+    std::uint64_t Key = 0;
+    vtkIdType LastUse = 0;
+    bool IsFree(const Holders& pipeline) const;
+  };
+
+  Buffer* Find(vtkDataArray* rest, const std::vector<vtkIdType>& ids, std::uint64_t key);
+  Buffer& Acquire(vtkDataArray* rest, bool points);
+  void Refresh(Buffer& buffer, vtkDataArray* rest, const std::vector<vtkIdType>& ids,
+    std::uint64_t key, const Writer& write);
+
+  std::vector<Buffer> Buffers;
+  Holders PipelineHolders;
+  vtkIdType Copies = 0;
+  vtkIdType Uses = 0;
+};
+
+}
+}
+
+#endif

@@ -1,0 +1,516 @@
+#include "SurfaceAdapter.h"
+
+#include "CoincidentPoints.h"
+#include "SurfaceMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkLinearTransform.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <unordered_map>
+
+namespace le = LaplacianEditing;
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+
+namespace
+{
+// Calls `visit(size, ids)` on each polygon of `input`, in order.
+void VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const vtkIdType*)>& visit)
+{
+  auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    visit(size, ids);
+  }
+}
+}
+
+vtkMTimeType SurfaceAdapter::GetContentTime(vtkPolyData* surface)
+{
+  vtkMTimeType time = surface->GetPoints() ? surface->GetPoints()->GetMTime() : 0;
+  for (vtkCellArray* cells :
+    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
+  {
+    time = std::max(time, cells ? cells->GetMTime() : 0);
+  }
+  for (vtkFieldData* attributes : { static_cast<vtkFieldData*>(surface->GetPointData()),
+         static_cast<vtkFieldData*>(surface->GetCellData()) })
+  {
+    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+    {
+      vtkAbstractArray* array = attributes->GetAbstractArray(i);
+      time = std::max(time, array ? array->GetMTime() : 0);
+    }
+  }
+  return time;
+}
+
+vtkIdType SurfaceAdapter::FindNearestCorner(vtkPolyData* input, const double point[3])
+{
+  std::vector<char> corner(input->GetNumberOfPoints(), 0);
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    std::for_each(ids, ids + size, [&](vtkIdType id) { corner[id] = 1; });
+  });
+  vtkIdType nearest = -1;
+  double nearestDistance = VTK_DOUBLE_MAX;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    const double distance = vtkMath::Distance2BetweenPoints(input->GetPoint(i), point);
+    if (corner[i] && distance < nearestDistance)
+    {
+      nearest = i;
+      nearestDistance = distance;
+    }
+  }
+  return nearest;
+}
+
+namespace
+{
+// Which points lie within `reach.Margin` of a seed: a box test, then the seeds hashed on a grid
+// of the margin's size, so that the cost is one pass over the points whatever the seeds.
+class ReachTest
+{
+public:
+  explicit ReachTest(const Reach& reach)
+    : Seeds(reach.Seeds)
+    , Margin(reach.Margin)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Box[2 * a] = VTK_DOUBLE_MAX;
+      this->Box[2 * a + 1] = VTK_DOUBLE_MIN;
+    }
+    for (const auto& seed : this->Seeds)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Box[2 * a] = std::min(this->Box[2 * a], seed[a] - this->Margin);
+        this->Box[2 * a + 1] = std::max(this->Box[2 * a + 1], seed[a] + this->Margin);
+      }
+      this->Cells[this->Key(seed.data(), 0, 0, 0)].push_back(&seed);
+    }
+  }
+
+  bool operator()(const double p[3]) const
+  {
+    if (this->Margin < 0.0)
+    {
+      return true;
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      if (p[a] < this->Box[2 * a] || p[a] > this->Box[2 * a + 1])
+      {
+        return false;
+      }
+    }
+    const double margin2 = this->Margin * this->Margin;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz)
+        {
+          const auto cell = this->Cells.find(this->Key(p, dx, dy, dz));
+          if (cell != this->Cells.end() &&
+            std::any_of(cell->second.begin(), cell->second.end(), [&](const std::array<double, 3>* s) {
+              return vtkMath::Distance2BetweenPoints(p, s->data()) <= margin2;
+            }))
+          {
+            return true;
+          }
+        }
+    return false;
+  }
+
+private:
+  std::uint64_t Key(const double p[3], int dx, int dy, int dz) const
+  {
+    // Cell indices clamped so that no conversion overflows (far cells merely share a bucket),
+    // mixed in unsigned arithmetic.
+    const double size = this->Margin > 0.0 ? this->Margin : 1.0;
+    const int offsets[3] = { dx, dy, dz };
+    std::uint64_t key = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double cell = std::max(-1e15, std::min(1e15, std::floor(p[a] / size))) + offsets[a];
+      key = key * 1000003u ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell));
+    }
+    return key;
+  }
+
+  const std::vector<std::array<double, 3>>& Seeds;
+  double Margin;
+  double Box[6];
+  std::unordered_map<std::uint64_t, std::vector<const std::array<double, 3>*>> Cells;
+};
+}
+
+vtkSmartPointer<vtkPolyData> SurfaceAdapter::ExtractReach(
+  vtkPolyData* input, const Reach& reach)
+{
+  const ReachTest inReach(reach);
+  std::vector<char> reached(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    reached[i] = inReach(input->GetPoint(i));
+  }
+  std::vector<vtkIdType> pointOfInput(input->GetNumberOfPoints(), -1);
+  vtkNew<vtkIdTypeArray> originalPoints, originalCells;
+  originalPoints->SetName("vtkOriginalPointIds");
+  originalCells->SetName("vtkOriginalCellIds");
+  vtkNew<vtkCellArray> polygons;
+  // The polygons are the input's cells after its vertices and lines.
+  const vtkIdType firstPolygon = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  vtkIdType polygon = -1;
+  std::vector<vtkIdType> corners;
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    ++polygon;
+    if (std::none_of(ids, ids + size, [&](vtkIdType id) { return reached[id] != 0; }))
+    {
+      return;
+    }
+    corners.clear();
+    for (vtkIdType c = 0; c < size; ++c)
+    {
+      if (pointOfInput[ids[c]] < 0)
+      {
+        pointOfInput[ids[c]] = originalPoints->GetNumberOfTuples();
+        originalPoints->InsertNextValue(ids[c]);
+      }
+      corners.push_back(pointOfInput[ids[c]]);
+    }
+    polygons->InsertNextCell(size, corners.data());
+    originalCells->InsertNextValue(firstPolygon + polygon);
+  });
+  auto part = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints() ? input->GetPoints()->GetDataType() : VTK_DOUBLE);
+  points->SetNumberOfPoints(originalPoints->GetNumberOfTuples());
+  part->GetPointData()->CopyAllocate(input->GetPointData(), originalPoints->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < originalPoints->GetNumberOfTuples(); ++i)
+  {
+    points->SetPoint(i, input->GetPoint(originalPoints->GetValue(i)));
+    part->GetPointData()->CopyData(input->GetPointData(), originalPoints->GetValue(i), i);
+  }
+  part->SetPoints(points);
+  part->SetPolys(polygons);
+  part->GetCellData()->CopyAllocate(input->GetCellData(), originalCells->GetNumberOfTuples());
+  for (vtkIdType c = 0; c < originalCells->GetNumberOfTuples(); ++c)
+  {
+    part->GetCellData()->CopyData(input->GetCellData(), originalCells->GetValue(c), c);
+  }
+  part->GetPointData()->AddArray(originalPoints);
+  part->GetCellData()->AddArray(originalCells);
+  return part;
+}
+
+std::string SurfaceAdapter::CheckSurface(vtkPolyData* input)
+{
+  if (input->GetNumberOfPoints() == 0)
+  {
+    return "The input mesh is empty.";
+  }
+  if (input->GetNumberOfPolys() == 0)
+  {
+    return "The input has no polygons (only vertices, lines or strips): the filter edits "
+           "triangle surfaces.";
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    return "The input has triangle strips; run vtkTriangleFilter first.";
+  }
+  return {};
+}
+
+std::string SurfaceAdapter::Update(
+  vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach, bool& rebuilt)
+{
+  const vtkMTimeType time = GetContentTime(input);
+  rebuilt = !(this->Mesh && time == this->BuiltTime &&
+    mergeCoincidentPoints == this->BuiltMerge && reach == this->BuiltReach);
+  if (!rebuilt)
+  {
+    return {};
+  }
+  const std::string error = this->Build(input, mergeCoincidentPoints, reach);
+  if (error.empty())
+  {
+    this->BuiltTime = time;
+    this->BuiltMerge = mergeCoincidentPoints;
+    this->BuiltReach = reach;
+  }
+  return error;
+}
+
+std::string SurfaceAdapter::Build(
+  vtkPolyData* input, bool mergeCoincidentPoints, const Reach& reach)
+{
+  this->Mesh.reset();
+  std::vector<char> mark;
+  std::string error = MarkReach(input, reach, mark);
+  if (!error.empty())
+  {
+    return error;
+  }
+  MarkRing(input, mergeCoincidentPoints && reach.Margin >= 0.0, mark);
+  this->KeepMarkedPolygons(input, mark);
+  if (this->InputPoints.empty())
+  {
+    return "No polygon lies within reach of the handle.";
+  }
+  error = this->ChooseFrame(input);
+  if (!error.empty())
+  {
+    return error;
+  }
+  std::vector<le::Vector3> points(this->InputPoints.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    points[i] = this->Normalize(input->GetPoint(this->InputPoints[i]));
+  }
+  auto mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
+    points, this->Offsets, this->Connectivity, mergeCoincidentPoints));
+  if (mesh->GetNumberOfTriangles() == 0)
+  {
+    return "The input polygons are all degenerate: no triangle has three distinct corners.";
+  }
+  this->Mesh = std::move(mesh);
+  return {};
+}
+
+std::string SurfaceAdapter::MarkReach(
+  vtkPolyData* input, const Reach& reach, std::vector<char>& mark)
+{
+  // One pass over the points: their coordinates, and which lie in reach (1).
+  mark.assign(input->GetNumberOfPoints(), 0);
+  const ReachTest inReach(reach);
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    const double* p = input->GetPoint(i);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return "Point " + std::to_string(i) + " has a NaN or infinite coordinate.";
+    }
+    mark[i] = inReach(p);
+  }
+  return {};
+}
+
+void SurfaceAdapter::MarkRing(
+  vtkPolyData* input, bool mergeCopies, std::vector<char>& mark)
+{
+  // Polygons with a corner in reach mark their other corners (2), so that the ring of fixed
+  // vertices around the region keeps its whole one-ring once every polygon with a marked corner
+  // is kept.
+  std::vector<vtkIdType> ring;
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] == 1; }))
+    {
+      std::for_each(ids, ids + size, [&](vtkIdType id) {
+        if (!mark[id])
+        {
+          mark[id] = 2;
+          ring.push_back(id);
+        }
+      });
+    }
+  });
+  if (!mergeCopies || ring.empty())
+  {
+    return;
+  }
+  // The ring's points that coincide with another point are that point too (a seam, a triangle
+  // soup): mark their copies, so that the ring keeps its whole one-ring. The tolerance, relative
+  // to the whole input, is at least the mesh's, relative to the part kept.
+  double bounds[6];
+  input->GetPoints()->GetBounds(bounds);
+  const le::Vector3 low(bounds[0], bounds[2], bounds[4]);
+  const double diagonal = (le::Vector3(bounds[1], bounds[3], bounds[5]) - low).norm();
+  le::CoincidentPoints copies(le::CoincidentPoints::RelativeTolerance * diagonal, low);
+  for (vtkIdType id : ring)
+  {
+    copies.Add(le::Vector3(input->GetPoint(id)), 0);
+  }
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    mark[i] = mark[i] ? mark[i] : (copies.Find(le::Vector3(input->GetPoint(i))) == 0 ? 2 : 0);
+  }
+}
+
+void SurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark)
+{
+  std::unordered_map<vtkIdType, std::int64_t> pointOfInput;
+  this->InputPoints.clear();
+  this->InputPolygons.clear();
+  this->Offsets.assign(1, 0);
+  this->Connectivity.clear();
+  vtkIdType polygon = 0;
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] != 0; }))
+    {
+      for (vtkIdType c = 0; c < size; ++c)
+      {
+        const auto inserted =
+          pointOfInput.emplace(ids[c], static_cast<std::int64_t>(this->InputPoints.size()));
+        if (inserted.second)
+        {
+          this->InputPoints.push_back(ids[c]);
+        }
+        this->Connectivity.push_back(inserted.first->second);
+      }
+      this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
+      this->InputPolygons.push_back(polygon);
+    }
+    ++polygon;
+  });
+  // Points in reach that no polygon uses stay, as isolated vertices, so that the core can say
+  // what it thinks of them (a labelled one is refused).
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    if (mark[i] == 1 && !pointOfInput.count(i))
+    {
+      pointOfInput.emplace(i, static_cast<std::int64_t>(this->InputPoints.size()));
+      this->InputPoints.push_back(i);
+    }
+  }
+}
+
+std::string SurfaceAdapter::ChooseFrame(vtkPolyData* input)
+{
+  // The core's frame: centred on the kept points' bounding box, scaled to a unit diagonal.
+  double bounds[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+    VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+  for (vtkIdType id : this->InputPoints)
+  {
+    const double* p = input->GetPoint(id);
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = std::min(bounds[2 * a], p[a]);
+      bounds[2 * a + 1] = std::max(bounds[2 * a + 1], p[a]);
+    }
+  }
+  this->Center = le::Vector3(
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
+  const double diagonal =
+    le::Vector3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
+  if (!(diagonal > 0.0))
+  {
+    return "All input points coincide: there is no surface to edit.";
+  }
+  this->Scale = 1.0 / diagonal;
+  return {};
+}
+
+void SurfaceAdapter::GetPolygons(
+  vtkPolyData* input, std::vector<std::int64_t>& offsets, std::vector<std::int64_t>& connectivity)
+{
+  offsets.assign(1, 0);
+  connectivity.clear();
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    connectivity.insert(connectivity.end(), ids, ids + size);
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+  });
+}
+
+le::Vector3 SurfaceAdapter::Normalize(const double p[3]) const
+{
+  return (le::Vector3(p[0], p[1], p[2]) - this->Center) * this->Scale;
+}
+
+le::Vector3 SurfaceAdapter::Denormalize(const le::Vector3& p) const
+{
+  return p / this->Scale + this->Center;
+}
+
+le::AffineMap SurfaceAdapter::NormalizedMap(vtkLinearTransform* transform) const
+{
+  transform->Update();
+  vtkMatrix4x4* m = transform->GetMatrix();
+  Eigen::Matrix3d linear;
+  Eigen::Vector3d translation;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear(r, c) = m->GetElement(r, c);
+    }
+    translation[r] = m->GetElement(r, 3);
+  }
+  le::AffineMap map;
+  map.leftCols<3>() = linear;
+  map.col(3) = this->Scale * (linear * this->Center + translation - this->Center);
+  return map;
+}
+
+std::vector<int> SurfaceAdapter::VertexLabels(vtkDataArray* selection) const
+{
+  const auto& vertexOfPoint = this->Mesh->GetVertexOfPoint();
+  std::vector<int> labels(this->Mesh->GetNumberOfVertices(), 0);
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(vertexOfPoint.size()); ++i)
+  {
+    int& label = labels[vertexOfPoint[i]];
+    label = std::max(label, static_cast<int>(selection->GetComponent(this->InputPoints[i], 0)));
+  }
+  return labels;
+}
+
+void SurfaceAdapter::IndexRegion(const le::EditRegion& region)
+{
+  const auto& vertexOfPoint = this->Mesh->GetVertexOfPoint();
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(vertexOfPoint.size());
+  this->RowOfVertex.assign(this->Mesh->GetNumberOfVertices(), -1);
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
+  {
+    this->RowOfVertex[region.Vertices[k]] = k;
+  }
+  MovedPoints& moved = this->RegionPoints;
+  moved = MovedPoints();
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    const int k = this->RowOfVertex[vertexOfPoint[i]];
+    if (k >= 0)
+    {
+      moved.Ids.push_back(this->InputPoints[i]);
+      moved.Rows.push_back(k);
+      moved.Roles.push_back(static_cast<signed char>(region.Roles[k]));
+    }
+  }
+}
+
+OutputEdit SurfaceAdapter::GetEdit(const le::Positions& solution,
+  const NormalRefresher* normals, std::uint64_t regionVersion) const
+{
+  OutputEdit edit;
+  edit.Moved = &this->RegionPoints;
+  edit.Solution = &solution;
+  edit.Center = this->Center;
+  edit.Scale = this->Scale;
+  edit.Normals = normals;
+  edit.VertexRest = &this->Mesh->GetPositions();
+  edit.VertexRows = &this->RowOfVertex;
+  edit.RegionVersion = regionVersion;
+  return edit;
+}
+}
+}
