@@ -450,7 +450,7 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
 
 void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
 {
-  // The representation on the process that has the filter (the built-in session's, or a
+  // The handle widget on the process that has the filter (the built-in session's, or a
   // server's that renders too) previews with it; elsewhere the filter has no object.
   vtkSMProxy* filter = this->proxy();
   vtkSMProxy* widget = this->widgetProxy();
@@ -461,7 +461,7 @@ void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
     return;
   }
   vtkClientServerStream stream;
-  stream << vtkClientServerStream::Invoke << VTKOBJECT(widget) << "GetRepresentation"
+  stream << vtkClientServerStream::Invoke << VTKOBJECT(widget) << "GetWidget"
          << vtkClientServerStream::End;
   stream << vtkClientServerStream::Invoke << vtkClientServerStream::LastResult
          << "SetPreviewFilter";

@@ -1,0 +1,577 @@
+// Each stage of the edit pipeline on its own, from plain data: a few hand-built polygons, no
+// filter around them. The filters' tests cover the stages together.
+#include "EditPipeline.h"
+#include "BumpyPlane.h"
+#include "FilterTestHelpers.h"
+#include "HandleMaps.h"
+#include "HandleMotion.h"
+#include "LandmarkBinder.h"
+#include "LandmarkSource.h"
+#include "NormalRefresher.h"
+#include "OutputArray.h"
+#include "OutputWriter.h"
+#include "PreviewParts.h"
+#include "RegionSelector.h"
+#include "RestShape.h"
+#include "SolverSettings.h"
+#include "SurfaceAdapter.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkTransform.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace le = LaplacianEditing;
+namespace lep = LaplacianEditing::Pipeline;
+
+namespace
+{
+// An n x n grid of unit squares, each split into two triangles, at height z = 0, with point
+// normals; `offset` moves it along x.
+vtkSmartPointer<vtkPolyData> Grid(int n, double offset = 0.0)
+{
+  BumpyPlaneShape flat;
+  flat.Resolution = n;
+  flat.BumpsPerSide = 0;
+  vtkSmartPointer<vtkPolyData> grid = flat.Make();
+  vtkPoints* points = grid->GetPoints();
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+  {
+    const double* x = points->GetPoint(p);
+    points->SetPoint(p, n * x[0] + offset, n * x[1], 0.0);
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+  }
+  grid->GetPointData()->SetNormals(normals);
+  return grid;
+}
+
+// A surface adapter over the whole of `input`, with a region of the vertices within `roi` of the
+// grid's centre, the inner ones moved to `lift`.
+struct AdaptedGrid
+{
+  vtkSmartPointer<vtkPolyData> Input;
+  lep::SurfaceAdapter Surface;
+  le::EditRegion Region;
+  le::Positions Solution;
+
+  AdaptedGrid(int n, double roi, double lift)
+    : Input(Grid(n))
+  {
+    bool rebuilt = false;
+    EXPECT_EQ(this->Surface.Update(this->Input, true, lep::Reach(), rebuilt), "");
+    const le::SurfaceMesh& mesh = *this->Surface.GetMesh();
+    const le::Vector3 center = this->Surface.Normalize(std::vector<double>{ n / 2.0, n / 2.0, 0.0 }.data());
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      const double d = (mesh.GetPositions()[v] - center).norm() / this->Surface.GetScale();
+      if (d <= roi)
+      {
+        this->Region.Vertices.push_back(v);
+        this->Region.Roles.push_back(d <= 1.0 ? le::VertexRole::Handle : le::VertexRole::Free);
+      }
+    }
+    this->Surface.IndexRegion(this->Region);
+    this->Solution.resize(this->Region.GetNumberOfVertices(), 3);
+    for (int k = 0; k < this->Region.GetNumberOfVertices(); ++k)
+    {
+      const bool handle = this->Region.Roles[k] == le::VertexRole::Handle;
+      this->Solution.row(k) = mesh.GetPositions()[this->Region.Vertices[k]].transpose();
+      this->Solution(k, 2) += handle ? lift * this->Surface.GetScale() : 0.0;
+    }
+  }
+};
+
+// A source of a labelled region (labels of an integer array) whose handle group moves by a
+// translation; it can fail at will.
+class LabelledSource : public lep::EditSource
+{
+public:
+  vtkDataArray* Labels = nullptr;
+  double Translation[3] = { 0.0, 0.0, 0.0 };
+  std::string Error;
+  int RegionsSelected = 0;
+
+  std::string ChooseRegion(
+    vtkPolyData* rest, const lep::SurfaceAdapter& surface, lep::RegionChoice& region) override
+  {
+    region.Request.Selection = le::RegionRequest::Kind::Labeled;
+    region.Request.LabelsVersion = this->Labels->GetMTime();
+    vtkDataArray* labels = this->Labels;
+    region.Labels = [&surface, labels] { return surface.VertexLabels(labels); };
+    (void)rest;
+    return this->Error;
+  }
+  void RegionSelected(const le::RegionRequest&, const le::EditRegion&,
+    const lep::SurfaceAdapter&) override
+  {
+    ++this->RegionsSelected;
+  }
+  std::string ChooseMotions(const lep::SurfaceAdapter& surface, const le::EditRegion& region,
+    lep::EditMotions& motions) override
+  {
+    vtkNew<vtkTransform> move;
+    move->Translate(this->Translation);
+    motions.Maps.assign(region.NumberOfHandleGroups, surface.NormalizedMap(move));
+    return {};
+  }
+};
+
+// Labels on a grid: the handle at the middle column's points, the ROI around, fixed beyond.
+vtkSmartPointer<vtkIntArray> GridLabels(vtkPolyData* grid, int n)
+{
+  auto labels = vtkSmartPointer<vtkIntArray>::New();
+  labels->SetName("Labels");
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+  {
+    const double* x = grid->GetPoint(p);
+    const double d = std::max(std::abs(x[0] - n / 2.0), std::abs(x[1] - n / 2.0));
+    labels->InsertNextValue(d < 0.5 ? 2 : (d < n / 2.0 - 0.5 ? 1 : 0));
+  }
+  return labels;
+}
+}
+
+TEST(SurfaceAdapter, RefusesWhatNoEditorTakes)
+{
+  vtkNew<vtkPolyData> empty;
+  EXPECT_NE(lep::SurfaceAdapter::CheckSurface(empty).find("empty"), std::string::npos);
+  vtkNew<vtkPolyData> lines;
+  lines->SetPoints(Grid(1)->GetPoints());
+  EXPECT_NE(lep::SurfaceAdapter::CheckSurface(lines).find("no polygons"), std::string::npos);
+  EXPECT_EQ(lep::SurfaceAdapter::CheckSurface(Grid(2)), "");
+
+  auto grid = Grid(2);
+  grid->GetPoints()->SetPoint(4, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+  lep::SurfaceAdapter surface;
+  EXPECT_NE(surface.Build(grid, true, lep::Reach()).find("Point 4"), std::string::npos);
+}
+
+TEST(SurfaceAdapter, WeldsSeamsInAUnitFrameAndKeepsToItsReach)
+{
+  // Two grids side by side sharing an edge's positions but not its points: a seam.
+  auto left = Grid(2), right = Grid(2, 2.0);
+  vtkNew<vtkPolyData> both;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  for (vtkPolyData* part : { left.Get(), right.Get() })
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    for (vtkIdType p = 0; p < part->GetNumberOfPoints(); ++p)
+    {
+      points->InsertNextPoint(part->GetPoint(p));
+    }
+    vtkIdType size;
+    const vtkIdType* ids;
+    for (part->GetPolys()->InitTraversal(); part->GetPolys()->GetNextCell(size, ids);)
+    {
+      const vtkIdType shifted[3] = { ids[0] + first, ids[1] + first, ids[2] + first };
+      triangles->InsertNextCell(3, shifted);
+    }
+  }
+  both->SetPoints(points);
+  both->SetPolys(triangles);
+
+  lep::SurfaceAdapter surface;
+  bool rebuilt = false;
+  ASSERT_EQ(surface.Update(both, true, lep::Reach(), rebuilt), "");
+  EXPECT_TRUE(rebuilt);
+  EXPECT_EQ(surface.GetMesh()->GetNumberOfVertices(), 18 - 3) << "the seam's three points weld";
+  EXPECT_NEAR(1.0 / surface.GetScale(), std::hypot(4.0, 2.0), 1e-12) << "a unit diagonal";
+  ASSERT_EQ(surface.Update(both, true, lep::Reach(), rebuilt), "");
+  EXPECT_FALSE(rebuilt) << "the same content, merge flag and reach";
+  ASSERT_EQ(surface.Update(both, false, lep::Reach(), rebuilt), "");
+  EXPECT_EQ(surface.GetMesh()->GetNumberOfVertices(), 18) << "unwelded";
+
+  // A reach around the left grid's corner keeps the polygons there and the ring of polygons
+  // around them, nothing of the right grid.
+  lep::Reach reach;
+  reach.Seeds.push_back({ 0.0, 0.0, 0.0 });
+  reach.Margin = 0.5;
+  ASSERT_EQ(surface.Update(both, true, reach, rebuilt), "");
+  EXPECT_GT(surface.GetInputPoints().size(), 3u);
+  for (vtkIdType id : surface.GetInputPoints())
+  {
+    EXPECT_LT(id, 9) << "nothing of the right grid";
+  }
+}
+
+TEST(SurfaceAdapter, MapsTransformsIntoItsFrameAndIndexesTheRegion)
+{
+  AdaptedGrid grid(4, 1.6, 0.5);
+  vtkNew<vtkTransform> transform;
+  transform->Translate(1.0, -2.0, 0.5);
+  transform->RotateZ(30.0);
+  const le::AffineMap map = grid.Surface.NormalizedMap(transform);
+  const double p[3] = { 3.0, 1.0, 0.0 };
+  double moved[3];
+  transform->TransformPoint(p, moved);
+  const le::Vector3 expected = grid.Surface.Normalize(moved);
+  const le::Vector3 mapped = map.leftCols<3>() * grid.Surface.Normalize(p) + map.col(3);
+  EXPECT_LT((mapped - expected).norm(), 1e-14);
+
+  const lep::MovedPoints& moved_points = grid.Surface.GetRegionPoints();
+  EXPECT_EQ(moved_points.Ids.size(), static_cast<std::size_t>(grid.Region.GetNumberOfVertices()));
+  for (std::size_t i = 0; i < moved_points.Ids.size(); ++i)
+  {
+    const double* x = grid.Input->GetPoint(moved_points.Ids[i]);
+    EXPECT_LE(std::hypot(x[0] - 2.0, x[1] - 2.0), 1.6 + 1e-12);
+  }
+}
+
+TEST(RegionSelector, ChecksLabelsAndBoundsTheReach)
+{
+  lep::RegionSelector selector;
+  auto grid = Grid(4);
+  auto label = [](vtkPolyData*, vtkSelection*) { return vtkSmartPointer<vtkIntArray>(); };
+  EXPECT_NE(selector.SelectLabels(grid, nullptr, true, nullptr, label).find("no such point array"),
+    std::string::npos);
+  vtkNew<vtkDoubleArray> real;
+  real->SetName("Real");
+  real->SetNumberOfTuples(grid->GetNumberOfPoints());
+  EXPECT_NE(selector.SelectLabels(grid, nullptr, true, real, label).find("integer array"),
+    std::string::npos);
+  EXPECT_EQ(selector.SelectLabels(grid, nullptr, false, nullptr, label), "");
+  EXPECT_EQ(selector.GetLabels(), nullptr) << "geodesic discs";
+
+  lep::RegionParameters parameters;
+  parameters.HandleCenter[0] = parameters.HandleCenter[1] = 2.0;
+  parameters.HandleRadius = 0.5;
+  parameters.ROIRadius = 1.5;
+  const lep::Reach& reach = selector.ComputeReach(grid, parameters);
+  ASSERT_EQ(reach.Seeds.size(), 1u);
+  // The handle centre is a vertex: the ROI and the default smoothing support, 10% wider.
+  EXPECT_NEAR(reach.Margin, 1.1 * (1.5 + 0.2 * 1.5), 1e-12);
+  lep::Reach none;
+  lep::RegionSelector::SetMargin(none, parameters, false, 0.0, 0.0);
+  EXPECT_LT(none.Margin, 0.0) << "no seeds: everything";
+
+  lep::SurfaceAdapter surface;
+  bool rebuilt = false;
+  ASSERT_EQ(surface.Update(grid, true, reach, rebuilt), "");
+  const le::RegionRequest request = selector.Request(grid, surface, parameters);
+  EXPECT_EQ(request.Selection, le::RegionRequest::Kind::Geodesic);
+  EXPECT_LT((surface.Denormalize(surface.GetMesh()->GetPositions()[request.CenterVertex]) -
+              le::Vector3(2.0, 2.0, 0.0)).norm(), 1e-12);
+  EXPECT_NEAR(request.ROIRadius, 1.5 * surface.GetScale(), 1e-15);
+}
+
+TEST(HandleMotion, AnglesAndMatricesRoundTripInOneConvention)
+{
+  for (const auto& angles : std::vector<std::array<double, 3>>{
+         { 10.0, 20.0, 30.0 }, { -170.0, 45.0, 100.0 }, { 0.0, -80.0, 5.0 } })
+  {
+    double matrix[3][3], back[3];
+    lep::HandleMotion::RotationMatrix(angles.data(), matrix);
+    lep::HandleMotion::Angles(matrix, back);
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_NEAR(back[a], angles[a], 1e-10);
+    }
+    // R = Rz Ry Rx: the x rotation comes first.
+    vtkNew<vtkTransform> expected;
+    expected->RotateZ(angles[2]);
+    expected->RotateY(angles[1]);
+    expected->RotateX(angles[0]);
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(matrix[r][c], expected->GetMatrix()->GetElement(r, c), 1e-14);
+      }
+    }
+  }
+  // About a centre, then translated: the centre goes to centre + translation.
+  const double center[3] = { 1.0, 2.0, 3.0 }, rotation[3] = { 0.0, 0.0, 90.0 },
+               translation[3] = { 0.5, 0.0, 0.0 };
+  double moved[3];
+  lep::HandleMotion::Transform(center, rotation, translation)->TransformPoint(center, moved);
+  EXPECT_NEAR(moved[0], 1.5, 1e-14);
+  EXPECT_NEAR(moved[1], 2.0, 1e-14);
+}
+
+TEST(HandleMaps, SaysWhatChangedAndMapsEachGroup)
+{
+  lep::HandleMaps handles;
+  vtkNew<vtkTransform> lift;
+  lift->Translate(0.0, 0.0, 1.0);
+  EXPECT_TRUE(handles.SetTransform(1, lift));
+  EXPECT_FALSE(handles.SetTransform(1, lift)) << "the same transform";
+  EXPECT_EQ(handles.GetNumberOfTransforms(), 2);
+  EXPECT_TRUE(handles.SetMotion(2, { 0.0, 1.0, 0.0, 0.0, 0.0, 0.0 }));
+  EXPECT_FALSE(handles.SetMotion(2, { 0.0, 1.0, 0.0, 0.0, 0.0, 0.0 }));
+
+  AdaptedGrid grid(4, 1.6, 0.0);
+  le::EditRegion region = grid.Region;
+  region.NumberOfHandleGroups = 3;
+  region.HandleGroups.assign(region.GetNumberOfVertices(), -1);
+  int group = 0;
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
+  {
+    if (region.Roles[k] == le::VertexRole::Handle)
+    {
+      region.HandleGroups[k] = group++ % 3;
+    }
+  }
+  handles.FindGroupCenters(region, grid.Surface);
+  EXPECT_NE(handles.GetGroupCenter(2), nullptr);
+  EXPECT_EQ(handles.GetGroupCenter(3), nullptr);
+  const double center[3] = { 2.0, 2.0, 0.0 }, rotation[3] = { 0.0, 0.0, 0.0 },
+               translation[3] = { 1.0, 0.0, 0.0 };
+  const std::vector<le::AffineMap> maps = handles.Maps(3, grid.Surface, center, rotation, translation);
+  ASSERT_EQ(maps.size(), 3u);
+  const double s = grid.Surface.GetScale();
+  EXPECT_NEAR(maps[0](0, 3), s, 1e-14) << "group 0: the motion properties";
+  EXPECT_NEAR(maps[1](2, 3), s, 1e-14) << "group 1: its transform";
+  EXPECT_NEAR(maps[2](1, 3), s, 1e-14) << "group 2: its motion";
+  EXPECT_TRUE(handles.RemoveAllTransforms());
+  EXPECT_FALSE(handles.RemoveAllTransforms());
+}
+
+TEST(RestShape, CommitsUndoesAndForgetsOnNewContent)
+{
+  lep::RestShape rest;
+  auto input = Grid(2);
+  EXPECT_EQ(rest.Get(input), input.Get());
+  vtkNew<vtkPoints> edited;
+  edited->DeepCopy(input->GetPoints());
+  edited->SetPoint(4, 1.0, 1.0, 0.5);
+  rest.Commit(edited);
+  edited->SetPoint(4, 9.0, 9.0, 9.0); // the commit took a copy
+  vtkPolyData* committed = rest.Get(input);
+  EXPECT_NE(committed, input.Get());
+  EXPECT_EQ(committed->GetPoint(4)[2], 0.5);
+  EXPECT_EQ(committed->GetPolys(), input->GetPolys()) << "the input's cells, shared";
+  double point[3];
+  ASSERT_TRUE(rest.GetPoint(input, 4, point));
+  EXPECT_EQ(point[2], 0.5);
+  EXPECT_FALSE(rest.GetPoint(input, 99, point));
+  EXPECT_TRUE(rest.Undo());
+  EXPECT_FALSE(rest.Undo());
+  rest.Commit(edited);
+  input->GetPoints()->Modified();
+  EXPECT_EQ(rest.Get(input), input.Get()) << "new content forgets the commits";
+  EXPECT_EQ(rest.GetNumberOfCommits(), 0);
+}
+
+TEST(OutputArray, WritesItsTuplesInPlaceAndCopiesOnWrite)
+{
+  vtkNew<vtkDoubleArray> rest;
+  rest->SetNumberOfValues(10);
+  for (vtkIdType i = 0; i < 10; ++i)
+  {
+    rest->SetValue(i, i);
+  }
+  lep::OutputArray output;
+  const std::vector<vtkIdType> ids = { 2, 5 };
+  int writes = 0;
+  auto write = [&](vtkDataArray* array) {
+    ++writes;
+    for (vtkIdType id : ids)
+    {
+      array->SetTuple1(id, -1.0);
+    }
+  };
+  EXPECT_EQ(output.Update(rest, {}, 1, write), rest.Get()) << "nothing moved: the rest itself";
+  vtkDataArray* first = output.Update(rest, ids, 1, write);
+  EXPECT_NE(first, rest.Get());
+  EXPECT_EQ(first->GetTuple1(5), -1.0);
+  EXPECT_EQ(first->GetTuple1(4), 4.0);
+  EXPECT_EQ(rest->GetValue(5), 5.0) << "the rest is never written";
+  EXPECT_EQ(output.Update(rest, ids, 1, write), first) << "the same key: untouched";
+  EXPECT_EQ(writes, 1);
+  EXPECT_EQ(output.Update(rest, ids, 2, write), first) << "a new key: written in place";
+  EXPECT_EQ(output.GetNumberOfCopies(), 1);
+  vtkSmartPointer<vtkDataArray> held = first; // someone else holds it
+  vtkDataArray* second = output.Update(rest, ids, 3, write);
+  EXPECT_NE(second, first) << "copy on write";
+  EXPECT_EQ(output.GetNumberOfCopies(), 2);
+}
+
+TEST(OutputWriter, WritesOnlyTheRegionAndItsRoles)
+{
+  AdaptedGrid grid(4, 1.6, 0.5);
+  vtkNew<vtkPolyData> output;
+  output->ShallowCopy(grid.Input);
+  lep::OutputWriter writer;
+  lep::NormalRefresher normals;
+  normals.Index(grid.Input, grid.Surface);
+  const lep::OutputEdit edit = grid.Surface.GetEdit(grid.Solution, &normals, 1);
+  writer.Write(grid.Input, output, &edit, true, false);
+  vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
+  ASSERT_NE(roles, nullptr);
+  int handles = 0;
+  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
+  {
+    const double* x = grid.Input->GetPoint(p);
+    const double lifted = output->GetPoint(p)[2];
+    const bool handle = std::hypot(x[0] - 2.0, x[1] - 2.0) <= 1.0;
+    EXPECT_EQ(lifted, handle ? 0.5 : 0.0);
+    EXPECT_EQ(roles->GetTuple1(p), handle ? 3.0 : (std::hypot(x[0] - 2.0, x[1] - 2.0) <= 1.6 ? 2.0 : 0.0));
+    handles += handle;
+  }
+  EXPECT_GT(handles, 0);
+  EXPECT_EQ(grid.Input->GetPoint(12)[2], 0.0) << "the input is never written";
+
+  // Its normals are those of the moved surface, refreshed near the edit only.
+  vtkNew<vtkPolyDataNormals> expected;
+  expected->SetInputData(output);
+  expected->ComputePointNormalsOn();
+  expected->SplittingOff();
+  expected->ConsistencyOff();
+  expected->Update();
+  vtkDataArray* refreshed = output->GetPointData()->GetNormals();
+  vtkDataArray* recomputed = expected->GetOutput()->GetPointData()->GetNormals();
+  for (vtkIdType p : normals.GetPointIds())
+  {
+    double a[3], b[3];
+    refreshed->GetTuple(p, a);
+    recomputed->GetTuple(p, b);
+    EXPECT_GT(vtkMath::Dot(a, b), 0.99) << "point " << p;
+  }
+
+  writer.Write(grid.Input, output, nullptr, true, false);
+  EXPECT_EQ(output->GetPoints(), grid.Input->GetPoints()) << "nothing moved: the rest points";
+}
+
+TEST(PreviewParts, CutTheSurfaceIntoStillAndMovingParts)
+{
+  AdaptedGrid grid(6, 1.6, 0.5);
+  vtkNew<vtkPolyData> output;
+  output->ShallowCopy(grid.Input);
+  lep::NormalRefresher normals;
+  normals.Index(grid.Input, grid.Surface);
+  const lep::OutputEdit edit = grid.Surface.GetEdit(grid.Solution, &normals, 7);
+  lep::PreviewParts parts;
+  EXPECT_FALSE(parts.IsBuiltFor(7));
+  parts.Build(grid.Input, output, edit);
+  EXPECT_TRUE(parts.IsBuiltFor(7));
+  parts.Write(edit);
+  vtkPolyData* still = parts.GetStillPart();
+  vtkPolyData* moving = parts.GetMovingPart();
+  EXPECT_EQ(still->GetNumberOfPolys() + moving->GetNumberOfPolys(), grid.Input->GetNumberOfPolys());
+  EXPECT_LT(moving->GetNumberOfPoints(), grid.Input->GetNumberOfPoints());
+  double top = 0.0;
+  for (vtkIdType p = 0; p < moving->GetNumberOfPoints(); ++p)
+  {
+    top = std::max(top, moving->GetPoint(p)[2]);
+  }
+  EXPECT_EQ(top, 0.5) << "the moving part holds the solution";
+  EXPECT_EQ(still->GetPoints(), grid.Input->GetPoints()) << "the still part is at rest";
+}
+
+TEST(LandmarkBinder, BindsToTrianglesAndTurnsTargetsIntoTheCoresFrame)
+{
+  auto grid = Grid(2);
+  lep::SurfaceAdapter surface;
+  bool rebuilt = false;
+  ASSERT_EQ(surface.Update(grid, true, lep::Reach(), rebuilt), "");
+  vtkNew<vtkPoints> sources;
+  sources->SetDataTypeToDouble();
+  sources->InsertNextPoint(0.25, 0.5, 0.0); // inside a triangle
+  sources->InsertNextPoint(2.0, 2.0, 0.1);  // above a corner
+  lep::LandmarkBinder binder;
+  bool rebound = false;
+  ASSERT_EQ(binder.Update(sources, surface, 1.0, rebound), "");
+  EXPECT_TRUE(rebound);
+  EXPECT_NEAR(binder.GetDistances()[0], 0.0, 1e-14);
+  EXPECT_NEAR(binder.GetDistances()[1], 0.1, 1e-14);
+  ASSERT_EQ(binder.Update(sources, surface, 1.0, rebound), "");
+  EXPECT_FALSE(rebound) << "the same landmarks and surface";
+  EXPECT_NE(binder.Update(sources, surface, 0.05, rebound).find("lies on no component"),
+    std::string::npos);
+
+  ASSERT_EQ(binder.Update(sources, surface, 1.0, rebound), "");
+  le::PointTargets targets;
+  ASSERT_EQ(binder.Targets(sources, surface, targets), "");
+  // Landmarks at their sources: each bound point's target is where it is.
+  const le::Vector3 bound = surface.Normalize(std::vector<double>{ 0.25, 0.5, 0.0 }.data());
+  EXPECT_LT((targets.Targets.row(0).transpose() - bound).norm(), 1e-14);
+}
+
+TEST(SolverSettings, TranslateTheFiltersPropertiesForTheCore)
+{
+  lep::SolverSettings settings;
+  settings.RotationMode = static_cast<int>(le::RotationMode::AsRigidAsPossible);
+  settings.ARAPIterations = 30;
+  settings.DragARAPIterations = 2;
+  settings.NormalSmoothingRadius = 2.0;
+  EXPECT_FALSE(settings.System(100.0).LeastSquares) << "ARAP needs no least-squares system";
+  EXPECT_EQ(settings.System(100.0).MaximumFactorBytes, 100.0 * 1048576.0);
+  EXPECT_EQ(settings.Rotation(0.5, 0.1).Arap.MaximumIterations, 30);
+  EXPECT_NEAR(settings.Rotation(0.5, 0.1).NormalSmoothingRadius, 0.2, 1e-15) << "mesh units";
+  settings.NormalSmoothingRadius = 0.0;
+  EXPECT_NEAR(settings.Rotation(0.5, 0.1).NormalSmoothingRadius, 0.1, 1e-15) << "0.2 of the region";
+  settings.Dragging = true;
+  EXPECT_EQ(settings.Rotation(0.5, 0.1).Arap.MaximumIterations, 2) << "a drag step";
+  settings.Dragging = false;
+  settings.Settle = true;
+  EXPECT_EQ(settings.Rotation(0.5, 0.1).Arap.Tolerance, 0.0) << "the settle runs in full";
+  EXPECT_GT(lep::SolverSettings::AutomaticFactorLimit(), 0.0);
+}
+
+TEST(EditPipeline, RunsASourcesEditAndReportsThroughItsFilter)
+{
+  const int n = 8;
+  auto grid = Grid(n);
+  auto labels = GridLabels(grid, n);
+  vtkNew<vtkPolyDataAlgorithm> filter;
+  unsigned long code = vtkErrorCode::NoError;
+  lep::EditPipeline pipeline(filter, [&code](unsigned long c) { code = c; });
+  LabelledSource source;
+  source.Labels = labels;
+  source.Translation[2] = 0.5;
+  vtkNew<vtkPolyData> output;
+  output->ShallowCopy(grid);
+  pipeline.BeginUpdate();
+  ASSERT_TRUE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, true));
+  EXPECT_EQ(code, vtkErrorCode::NoError);
+  EXPECT_EQ(source.RegionsSelected, 1);
+  EXPECT_EQ(pipeline.GetEditor().GetNumberOfFactorizations(), 1);
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+  {
+    const int label = labels->GetValue(p);
+    const double z = output->GetPoint(p)[2];
+    if (label == 0)
+    {
+      EXPECT_EQ(z, 0.0) << "fixed point " << p << " untouched";
+    }
+    if (label == 2)
+    {
+      EXPECT_NEAR(z, 0.5, 1e-3) << "handle point " << p;
+    }
+  }
+  EXPECT_GT(pipeline.GetFacts().NumberOfROIVertices, 0);
+
+  // A move only solves; a source's error is the filter's.
+  source.Translation[2] = 0.25;
+  pipeline.BeginUpdate();
+  ASSERT_TRUE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, true));
+  EXPECT_EQ(source.RegionsSelected, 1);
+  EXPECT_EQ(pipeline.GetEditor().GetNumberOfFactorizations(), 1);
+  EXPECT_EQ(pipeline.GetFacts().SetupTime, 0.0);
+  source.Error = "no region today";
+  pipeline.BeginUpdate();
+  ErrorCatcher errors(filter, vtkCommand::ErrorEvent);
+  EXPECT_FALSE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, true));
+  EXPECT_NE(errors.Messages.find("no region today"), std::string::npos);
+  EXPECT_EQ(code, vtkErrorCode::UserError);
+}
