@@ -1,7 +1,7 @@
 // PreviewActors: draws a drag's preview in place of the actor that shows a filter's output.
 //
-// The handle widget's helper for views that redraw a whole surface whenever a point of it moves
-// (vtkLaplacianDragPreview). Show finds the renderer's actor whose input shares the filter's
+// vtkDeformationPreviewController's helper for views that redraw a whole surface whenever a point
+// of it moves (vtkLaplacianDragPreview). Show finds the renderer's actor whose input shares the filter's
 // output points, hides it, and adds to the renderer two actors that draw the preview's still
 // part and moving part with that actor's property, texture, placement and colouring (a copy of
 // its mapper's settings); Hide removes them and puts the actor back. Only the moving part's

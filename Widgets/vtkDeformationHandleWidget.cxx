@@ -1,9 +1,8 @@
 #include "vtkDeformationHandleWidget.h"
 
-#include "PreviewActors.h"
 #include "vtkDeformationHandleRepresentation.h"
+#include "vtkDeformationPreviewController.h"
 #include "vtkLaplacianDeformationFilter.h"
-#include "vtkLaplacianDragPreview.h"
 
 #include "vtkAssemblyPath.h"
 #include "vtkCallbackCommand.h"
@@ -34,13 +33,11 @@ vtkStandardNewMacro(vtkDeformationHandleWidget);
 struct vtkDeformationHandleWidget::vtkInternals
 {
   vtkNew<vtkCellPicker> SurfacePicker;
-  // The representation whose PlaceWidgetEvent reaches the filter and whose changes the preview
-  // follows, and the observers' tags.
+  // The representation whose PlaceWidgetEvent reaches the filter, and the observer's tag.
   vtkWeakPointer<vtkWidgetRepresentation> ObservedRepresentation;
-  unsigned long RepresentationObservers[2] = { 0, 0 };
-  // The drag preview: its solve and its actors.
-  vtkNew<vtkLaplacianDragPreview> Preview;
-  LaplacianEditing::Widgets::PreviewActors PreviewActors;
+  unsigned long PlaceObserver = 0;
+  // The drag preview of the representation's motion.
+  vtkNew<vtkDeformationPreviewController> Preview;
   // The filter's commit and undo events.
   unsigned long CommitObservers[2] = { 0, 0 };
   // A press outside the handle places the handle if it is released where it went down (within
@@ -114,11 +111,10 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
 {
   this->Internals->StopWatchingClicks();
-  this->Internals->PreviewActors.Hide();
+  this->Internals->Preview->SetRepresentation(nullptr);
   if (vtkWidgetRepresentation* observed = this->Internals->ObservedRepresentation)
   {
-    observed->RemoveObserver(this->Internals->RepresentationObservers[0]);
-    observed->RemoveObserver(this->Internals->RepresentationObservers[1]);
+    observed->RemoveObserver(this->Internals->PlaceObserver);
   }
   this->SetDeformationFilter(nullptr);
   this->SetSurfaceProp(nullptr);
@@ -148,22 +144,18 @@ void vtkDeformationHandleWidget::PairRepresentation()
   vtkInternals& internals = *this->Internals;
   if (internals.ObservedRepresentation != this->WidgetRep)
   {
-    internals.PreviewActors.Hide();
     if (internals.ObservedRepresentation)
     {
-      internals.ObservedRepresentation->RemoveObserver(internals.RepresentationObservers[0]);
-      internals.ObservedRepresentation->RemoveObserver(internals.RepresentationObservers[1]);
+      internals.ObservedRepresentation->RemoveObserver(internals.PlaceObserver);
     }
     internals.ObservedRepresentation = this->WidgetRep;
     if (this->WidgetRep)
     {
       // rep->PlaceWidget(bounds) moves and sizes the handle: the filter must edit there too.
-      internals.RepresentationObservers[0] = this->WidgetRep->AddObserver(
+      internals.PlaceObserver = this->WidgetRep->AddObserver(
         vtkCommand::PlaceWidgetEvent, this, &vtkDeformationHandleWidget::PushToFilter);
-      // A new motion (a drag, or ParaView's properties), or the representation hidden.
-      internals.RepresentationObservers[1] = this->WidgetRep->AddObserver(
-        vtkCommand::ModifiedEvent, this, &vtkDeformationHandleWidget::UpdatePreview);
     }
+    internals.Preview->SetRepresentation(this->GetDeformationHandleRepresentation());
   }
   vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
   vtkLaplacianDeformationFilter* filter = this->DeformationFilter;
@@ -187,51 +179,9 @@ void vtkDeformationHandleWidget::PairRepresentation()
   filter->SetHandleTransform(this->HandleGroup, rep->GetTransform());
 }
 
-void vtkDeformationHandleWidget::SetPreviewFilter(vtkLaplacianDeformationFilter* filter)
+vtkDeformationPreviewController* vtkDeformationHandleWidget::GetPreviewController()
 {
-  if (filter != this->Internals->Preview->GetFilter())
-  {
-    this->Internals->PreviewActors.Hide();
-    this->Internals->Preview->SetFilter(filter);
-    this->UpdatePreview();
-    this->Modified();
-  }
-}
-
-vtkLaplacianDeformationFilter* vtkDeformationHandleWidget::GetPreviewFilter()
-{
-  return this->Internals->Preview->GetFilter();
-}
-
-void vtkDeformationHandleWidget::SetPreviewing(vtkTypeBool previewing)
-{
-  if (this->Previewing != previewing)
-  {
-    this->Previewing = previewing;
-    this->UpdatePreview();
-    this->Modified();
-  }
-}
-
-int vtkDeformationHandleWidget::IsPreviewShown()
-{
-  return this->Internals->PreviewActors.IsShown() ? 1 : 0;
-}
-
-void vtkDeformationHandleWidget::UpdatePreview()
-{
-  // A hidden representation previews nothing, so that the output's actor stays.
-  vtkInternals& internals = *this->Internals;
-  vtkDeformationHandleRepresentation* rep = this->GetDeformationHandleRepresentation();
-  if (this->Previewing && rep && rep->GetRenderer() && rep->GetVisibility())
-  {
-    internals.PreviewActors.Show(
-      rep->GetRenderer(), internals.Preview, rep->GetTranslation(), rep->GetRotationAngles());
-  }
-  else
-  {
-    internals.PreviewActors.Hide();
-  }
+  return this->Internals->Preview;
 }
 
 void vtkDeformationHandleWidget::SetHandleGroup(int group)
@@ -577,7 +527,6 @@ void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HandleGroup: " << this->HandleGroup << "\n";
   os << indent << "SurfaceProp: " << this->SurfaceProp << "\n";
   os << indent << "Interacting: " << this->Interacting << "\n";
-  os << indent << "PreviewFilter: " << this->GetPreviewFilter() << "\n";
-  os << indent << "Previewing: " << (this->Previewing ? "On" : "Off")
-     << (this->IsPreviewShown() ? " (shown)" : "") << "\n";
+  os << indent << "PreviewController:\n";
+  this->Internals->Preview->PrintSelf(os, indent.GetNextIndent());
 }

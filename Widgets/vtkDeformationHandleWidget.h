@@ -43,12 +43,11 @@
  * pickable in applications that turn the manager on. vtkDeformationHandleRepresentation::
  * PlaceWidget(bounds) puts the handle in the centre of the bounds; the paired filter follows.
  *
- * Drag preview: with a preview filter (SetPreviewFilter, usually the paired filter) and
- * Previewing on, every change of the representation's translation or rotation shows the
- * filter's preview of that motion (vtkLaplacianDragPreview) in place of the actor that draws the
- * filter's output, without updating the pipeline; turning Previewing off, or hiding the
- * representation, puts that actor back. ParaView's panel uses it to drag large surfaces, and
- * updates the pipeline once on release.
+ * Drag preview: the widget's preview controller (GetPreviewController(), a
+ * vtkDeformationPreviewController on the widget's representation), given a filter and turned
+ * on, shows the filter's preview of every change of the handle's motion in place of the actor
+ * that draws the filter's output, without updating the pipeline. Applications whose views redraw
+ * a whole surface for any moved point use it to drag large surfaces, and update once on release.
  *
  * ResetHandle() undoes the current edit, CommitEdit() makes the edited surface the rest surface
  * of the next edit, UndoCommit() goes back one commit. The widget fires StartInteractionEvent,
@@ -72,6 +71,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkDeformationHandleRepresentation;
+class vtkDeformationPreviewController;
 class vtkLaplacianDeformationFilter;
 class vtkProp;
 
@@ -116,19 +116,11 @@ public:
    */
   void PlaceHandle(const double point[3]);
 
-  ///@{
   /**
-   * The drag preview (see the class description): the filter whose edit it previews, and
-   * whether it shows. Default none, off.
+   * The drag preview of the widget's representation (see the class description): set its filter
+   * and turn Previewing on. Off by default.
    */
-  void SetPreviewFilter(vtkLaplacianDeformationFilter* filter);
-  vtkLaplacianDeformationFilter* GetPreviewFilter();
-  void SetPreviewing(vtkTypeBool previewing);
-  vtkGetMacro(Previewing, vtkTypeBool);
-  vtkBooleanMacro(Previewing, vtkTypeBool);
-  /** Whether the preview shows now (the filter could preview, and an actor showed its output). */
-  int IsPreviewShown();
-  ///@}
+  vtkDeformationPreviewController* GetPreviewController();
 
   /**
    * Undo the current edit: the identity transform.
@@ -174,17 +166,14 @@ protected:
   // After the filter's rest shape changed: the handle rests where the edit put it (commit), or
   // where it was (undo).
   void RestAtCurrentCenter();
-  // The filter's handle and transform to the representation, and the representation's
-  // PlaceWidgetEvent and changes (for the preview) to the widget.
+  // The filter's handle and transform to the representation, the representation's
+  // PlaceWidgetEvent to the filter, and the representation to the preview.
   void PairRepresentation();
-  // Shows or hides the drag preview as Previewing says, for the representation's motion.
-  void UpdatePreview();
 
   vtkLaplacianDeformationFilter* DeformationFilter = nullptr;
   vtkProp* SurfaceProp = nullptr;
   int HandleGroup = 0;
   bool Interacting = false;
-  vtkTypeBool Previewing = 0;
 
 private:
   vtkDeformationHandleWidget(const vtkDeformationHandleWidget&) = delete;

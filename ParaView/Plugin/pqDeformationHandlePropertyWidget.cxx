@@ -31,6 +31,7 @@
 #include <QPushButton>
 
 #include <algorithm>
+#include <utility>
 
 struct pqDeformationHandlePropertyWidget::GroupHandle
 {
@@ -450,30 +451,36 @@ void pqDeformationHandlePropertyWidget::onGroupHandleEvent(
 
 void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
 {
-  // The handle widget on the process that has the filter (the built-in session's, or a
-  // server's that renders too) previews with it; elsewhere the filter has no object.
+  // The preview controller on the process that has the filter (the built-in session's, or a
+  // server's that renders too) previews with it, beside the representation there; elsewhere
+  // the filter has no object.
   vtkSMProxy* filter = this->proxy();
   vtkSMProxy* widget = this->widgetProxy();
   pqServer* server = pqApplicationCore::instance()->getServerManagerModel()->findServer(
     filter->GetSession());
-  if (!widget || !server || server->isRenderServerSeparate() || connect == this->PreviewConnected)
+  // The sub-proxies, through properties they expose (GetSubProxy is protected).
+  vtkSMProxy* preview = widget ? widget->GetProperty("Previewing")->GetParent() : nullptr;
+  vtkSMProxy* representation = widget ? widget->GetProperty("Translation")->GetParent() : nullptr;
+  if (!preview || !representation || !server || server->isRenderServerSeparate() ||
+    connect == this->PreviewConnected)
   {
     return;
   }
   vtkClientServerStream stream;
-  stream << vtkClientServerStream::Invoke << VTKOBJECT(widget) << "GetWidget"
-         << vtkClientServerStream::End;
-  stream << vtkClientServerStream::Invoke << vtkClientServerStream::LastResult
-         << "SetPreviewFilter";
-  if (connect)
+  for (const auto& [method, object] :
+    { std::make_pair("SetRepresentation", representation), std::make_pair("SetFilter", filter) })
   {
-    stream << VTKOBJECT(filter);
+    stream << vtkClientServerStream::Invoke << VTKOBJECT(preview) << method;
+    if (connect)
+    {
+      stream << VTKOBJECT(object);
+    }
+    else
+    {
+      stream << vtkClientServerID(0);
+    }
+    stream << vtkClientServerStream::End;
   }
-  else
-  {
-    stream << vtkClientServerID(0);
-  }
-  stream << vtkClientServerStream::End;
   filter->GetSession()->ExecuteStream(vtkPVSession::DATA_SERVER, stream, false);
   this->PreviewConnected = connect;
 }

@@ -16,6 +16,7 @@
 
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkDeformationHandleWidget.h"
+#include "vtkDeformationPreviewController.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -913,13 +914,13 @@ double DifferingPixels(const std::vector<unsigned char>& a, const std::vector<un
 
 int PreviewDrawsWhatTheUpdateDraws()
 {
-  // A widget that previews the filter's edit, as ParaView's panel drives one: not paired with
-  // the filter, the motion set as its representation's properties, the pipeline left alone
-  // until the motion is applied.
+  // A representation whose motion is previewed, as ParaView's panel drives one: the controller
+  // beside it, the motion set as its properties, the pipeline left alone until the motion is
+  // applied.
   Scene scene;
   vtkNew<vtkDeformationHandleRepresentation> rep;
-  vtkNew<vtkDeformationHandleWidget> widget;
-  widget->SetRepresentation(rep);
+  vtkNew<vtkDeformationPreviewController> preview;
+  preview->SetRepresentation(rep);
   rep->SetRenderer(scene.Renderer);
   rep->SetCenter(scene.Filter->GetHandleCenter());
   rep->SetHandleRadius(scene.Filter->GetHandleRadius());
@@ -933,22 +934,22 @@ int PreviewDrawsWhatTheUpdateDraws()
   scene.Filter->AddObserver(vtkCommand::EndEvent, counter);
   const std::vector<unsigned char> before = Frame(scene.Window);
 
-  widget->SetPreviewFilter(scene.Filter);
-  widget->PreviewingOn();
+  preview->SetFilter(scene.Filter);
+  preview->PreviewingOn();
   rep->SetTranslation(0.0, -0.05, 0.12);
   rep->SetRotationAngles(20.0, 0.0, 0.0);
-  Check(widget->IsPreviewShown(), "the preview shows");
+  Check(preview->IsPreviewShown(), "the preview shows");
   Check(!scene.SurfaceActor()->GetVisibility(), "the surface's actor is hidden while previewing");
   const std::vector<unsigned char> previewed = Frame(scene.Window);
   Check(updates == 0, "previewing updates nothing (" + std::to_string(updates) + " updates)");
   rep->VisibilityOff();
-  Check(!widget->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
+  Check(!preview->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
     "a hidden representation previews nothing");
   rep->VisibilityOn();
-  Check(widget->IsPreviewShown(), "shown again, it previews");
+  Check(preview->IsPreviewShown(), "shown again, it previews");
 
-  widget->PreviewingOff();
-  Check(!widget->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
+  preview->PreviewingOff();
+  Check(!preview->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
     "turning previewing off shows the surface's actor again");
   scene.Filter->SetHandleTranslation(rep->GetTranslation());
   scene.Filter->SetHandleRotation(rep->GetRotationAngles());
