@@ -54,7 +54,7 @@ PreviewActors::PreviewActors()
 
 PreviewActors::~PreviewActors()
 {
-  this->Hide();
+  this->Remove();
 }
 
 bool PreviewActors::Show(vtkRenderer* renderer, vtkLaplacianDragPreview* preview,
@@ -68,7 +68,7 @@ bool PreviewActors::Show(vtkRenderer* renderer, vtkLaplacianDragPreview* preview
   }
   if (renderer != this->Renderer)
   {
-    this->Hide();
+    this->Remove();
   }
   vtkActor* consumer = this->Consumer ? this->Consumer.GetPointer()
     : renderer && preview          ? FindConsumer(renderer, preview)
@@ -78,17 +78,20 @@ bool PreviewActors::Show(vtkRenderer* renderer, vtkLaplacianDragPreview* preview
     this->Hide();
     return false;
   }
-  if (!this->Consumer)
+  if (!this->Renderer)
   {
-    this->Consumer = consumer;
     this->Renderer = renderer;
-    this->ConsumerVisibility = consumer->GetVisibility();
-    this->CopyLook(consumer);
-    consumer->VisibilityOff();
     for (auto& part : this->Parts)
     {
       renderer->AddActor(part);
     }
+  }
+  if (!this->Consumer)
+  {
+    this->Consumer = consumer;
+    this->ConsumerVisibility = consumer->GetVisibility();
+    this->CopyLook(consumer);
+    consumer->VisibilityOff();
   }
   this->Mappers[0]->SetInputData(preview->GetStillPart());
   this->Mappers[1]->SetInputData(preview->GetMovingPart());
@@ -98,6 +101,22 @@ bool PreviewActors::Show(vtkRenderer* renderer, vtkLaplacianDragPreview* preview
 
 void PreviewActors::Hide()
 {
+  // The parts stay in the renderer, hidden, so that their buffers on the graphics card serve
+  // the next drag: the still part changes only with the region.
+  for (auto& part : this->Parts)
+  {
+    part->VisibilityOff();
+  }
+  if (this->Consumer)
+  {
+    this->Consumer->SetVisibility(this->ConsumerVisibility);
+  }
+  this->Consumer = nullptr;
+}
+
+void PreviewActors::Remove()
+{
+  this->Hide();
   if (this->Renderer)
   {
     for (auto& part : this->Parts)
@@ -105,11 +124,6 @@ void PreviewActors::Hide()
       this->Renderer->RemoveActor(part);
     }
   }
-  if (this->Consumer)
-  {
-    this->Consumer->SetVisibility(this->ConsumerVisibility);
-  }
-  this->Consumer = nullptr;
   this->Renderer = nullptr;
 }
 

@@ -4,8 +4,9 @@
 // of it moves (vtkLaplacianDragPreview). Show finds the renderer's actor whose input shares the filter's
 // output points, hides it, and adds to the renderer two actors that draw the preview's still
 // part and moving part with that actor's property, texture, placement and colouring (a copy of
-// its mapper's settings); Hide removes them and puts the actor back. Only the moving part's
-// small buffers change from one move to the next.
+// its mapper's settings); Hide hides them and puts the actor back. The parts stay in the renderer
+// between drags, so that the still part's buffers on the graphics card serve every drag of a
+// region; only the moving part's small buffers change from one move to the next.
 #ifndef LaplacianEditing_Widgets_PreviewActors_h
 #define LaplacianEditing_Widgets_PreviewActors_h
 
@@ -34,8 +35,10 @@ public:
   /// the renderer shows its output.
   bool Show(vtkRenderer* renderer, vtkLaplacianDragPreview* preview, const double translation[3],
     const double rotation[3]);
-  /// Puts the output's actor back and removes the parts.
+  /// Puts the output's actor back and hides the parts.
   void Hide();
+  /// Hides, and takes the parts out of their renderer.
+  void Remove();
   bool IsShown() const { return this->Consumer != nullptr; }
 
 private:

@@ -36,7 +36,7 @@ vtkDeformationPreviewController::vtkDeformationPreviewController()
 
 vtkDeformationPreviewController::~vtkDeformationPreviewController()
 {
-  this->Internals->Actors.Hide();
+  this->Internals->Actors.Remove();
   this->Internals->StopObserving();
 }
 
@@ -48,7 +48,7 @@ void vtkDeformationPreviewController::SetRepresentation(
   {
     return;
   }
-  internals.Actors.Hide();
+  internals.Actors.Remove();
   internals.StopObserving();
   internals.Representation = representation;
   if (representation)

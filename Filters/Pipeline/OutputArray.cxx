@@ -1,14 +1,178 @@
 #include "OutputArray.h"
 
 #include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationInformationVectorKey.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkPoints.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 
 namespace LaplacianEditing
 {
 namespace Pipeline
 {
+namespace
+{
+// The ranges vtkDataArray caches in its information (per component and of the tuples' norms,
+// plain and finite), carried across a write of a few tuples. Modified() drops the cache, and
+// whoever asks next (ParaView's data information, vtkPoints::GetBounds) would pass over the
+// whole array. Where a cached extreme lies outside the tuples written, the new extreme is that
+// one or a written value: known from the written tuples alone. Where it lies among them, the
+// range is left for VTK to compute.
+class CachedRanges
+{
+public:
+  // Before the write: the ranges cached, and the changing tuples' ranges.
+  void Capture(vtkDataArray* array, const std::vector<vtkIdType>& changing)
+  {
+    this->Components = array->GetNumberOfComponents();
+    vtkInformation* info = array->HasInformation() ? array->GetInformation() : nullptr;
+    for (int f = 0; f < Families; ++f)
+    {
+      this->Cached[f] = info && Get(info, f, this->Components, this->Ranges[f]);
+    }
+    this->Measure(array, changing, this->Old);
+  }
+
+  // After the write and Modified(): the ranges that are still known.
+  void Restore(vtkDataArray* array, const std::vector<vtkIdType>& changed)
+  {
+    std::array<Extremes, Families> written;
+    this->Measure(array, changed, written);
+    for (int f = 0; f < Families; ++f)
+    {
+      if (!this->Cached[f])
+      {
+        continue;
+      }
+      std::vector<double>& range = this->Ranges[f];
+      bool known = true;
+      for (std::size_t i = 0; i + 1 < range.size(); i += 2)
+      {
+        // Strictly outside the old written values: attained by a tuple not written.
+        known = known && range[i] < this->Old[f][i] && range[i + 1] > this->Old[f][i + 1];
+        range[i] = std::min(range[i], written[f][i]);
+        range[i + 1] = std::max(range[i + 1], written[f][i + 1]);
+      }
+      if (known)
+      {
+        Set(array->GetInformation(), f, this->Components, range);
+      }
+    }
+  }
+
+private:
+  // Component ranges, finite component ranges, norm range, finite norm range.
+  static constexpr int Families = 4;
+  using Extremes = std::vector<double>;
+
+  static bool Finite(int family) { return family == 1 || family == 3; }
+  static bool Norm(int family) { return family >= 2; }
+
+  static bool Get(vtkInformation* info, int family, int components, std::vector<double>& range)
+  {
+    if (Norm(family))
+    {
+      vtkInformationDoubleVectorKey* key =
+        Finite(family) ? vtkDataArray::L2_NORM_FINITE_RANGE() : vtkDataArray::L2_NORM_RANGE();
+      range.assign(2, 0.0);
+      return components > 1 && info->Has(key) && (info->Get(key, range.data()), true);
+    }
+    vtkInformationInformationVectorKey* key = Finite(family)
+      ? vtkAbstractArray::PER_FINITE_COMPONENT()
+      : vtkAbstractArray::PER_COMPONENT();
+    vtkInformationVector* perComponent = info->Has(key) ? info->Get(key) : nullptr;
+    if (!perComponent || perComponent->GetNumberOfInformationObjects() != components)
+    {
+      return false;
+    }
+    range.assign(2 * components, 0.0);
+    for (int c = 0; c < components; ++c)
+    {
+      vtkInformation* component = perComponent->GetInformationObject(c);
+      if (!component->Has(vtkDataArray::COMPONENT_RANGE()))
+      {
+        return false;
+      }
+      component->Get(vtkDataArray::COMPONENT_RANGE(), range.data() + 2 * c);
+    }
+    return true;
+  }
+
+  static void Set(vtkInformation* info, int family, int components, const std::vector<double>& range)
+  {
+    if (Norm(family))
+    {
+      info->Set(Finite(family) ? vtkDataArray::L2_NORM_FINITE_RANGE() : vtkDataArray::L2_NORM_RANGE(),
+        range.data(), 2);
+      return;
+    }
+    vtkNew<vtkInformationVector> perComponent;
+    perComponent->SetNumberOfInformationObjects(components);
+    for (int c = 0; c < components; ++c)
+    {
+      perComponent->GetInformationObject(c)->Set(
+        vtkDataArray::COMPONENT_RANGE(), range.data() + 2 * c, 2);
+    }
+    info->Set(
+      Finite(family) ? vtkAbstractArray::PER_FINITE_COMPONENT() : vtkAbstractArray::PER_COMPONENT(),
+      perComponent);
+  }
+
+  // The tuples' extremes in each family, (min, max) pairs; empty sets give (+inf, -inf).
+  void Measure(vtkDataArray* array, const std::vector<vtkIdType>& ids,
+    std::array<Extremes, Families>& extremes) const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < Families; ++f)
+    {
+      extremes[f].assign(Norm(f) ? 2 : 2 * this->Components, inf);
+      for (std::size_t i = 1; i < extremes[f].size(); i += 2)
+      {
+        extremes[f][i] = -inf;
+      }
+    }
+    std::vector<double> tuple(this->Components);
+    auto include = [](Extremes& e, std::size_t i, double v) {
+      e[i] = std::min(e[i], v);
+      e[i + 1] = std::max(e[i + 1], v);
+    };
+    for (const vtkIdType id : ids)
+    {
+      array->GetTuple(id, tuple.data());
+      double squared = 0.0;
+      bool finite = true;
+      for (int c = 0; c < this->Components; ++c)
+      {
+        include(extremes[0], 2 * c, tuple[c]);
+        if (std::isfinite(tuple[c]))
+        {
+          include(extremes[1], 2 * c, tuple[c]);
+        }
+        finite = finite && std::isfinite(tuple[c]);
+        squared += tuple[c] * tuple[c];
+      }
+      include(extremes[2], 0, std::sqrt(squared));
+      if (finite)
+      {
+        include(extremes[3], 0, std::sqrt(squared));
+      }
+    }
+  }
+
+  int Components = 0;
+  std::array<bool, Families> Cached = {};
+  std::array<std::vector<double>, Families> Ranges;
+  std::array<Extremes, Families> Old;
+};
+}
+
 
 bool OutputArray::Buffer::IsFree(const Holders& pipeline) const
 {
@@ -130,7 +294,18 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
     buffer.Written.clear();
     ++this->Copies;
   }
-  else if (buffer.Written != ids)
+  // The tuples that change: the last update's, back to rest, and this one's.
+  std::vector<vtkIdType> changing;
+  CachedRanges ranges;
+  if (derived)
+  {
+    changing = buffer.Written;
+    changing.insert(changing.end(), ids.begin(), ids.end());
+    std::sort(changing.begin(), changing.end());
+    changing.erase(std::unique(changing.begin(), changing.end()), changing.end());
+    ranges.Capture(buffer.Array, changing);
+  }
+  if (derived && buffer.Written != ids)
   {
     for (const vtkIdType id : buffer.Written)
     {
@@ -141,6 +316,10 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   buffer.Written = ids;
   buffer.Key = key;
   buffer.Array->Modified();
+  if (derived)
+  {
+    ranges.Restore(buffer.Array, changing);
+  }
   if (buffer.Points)
   {
     buffer.Points->Modified();

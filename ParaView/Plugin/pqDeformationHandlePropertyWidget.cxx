@@ -485,6 +485,19 @@ void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
   this->PreviewConnected = connect;
 }
 
+void pqDeformationHandlePropertyWidget::setDragging(bool dragging)
+{
+  // Straight to the filter, not as a command property: pushing a property marks the proxy
+  // modified, and ParaView would update the whole surface's representation at the drag's start
+  // and its release (a second each at 2M points). Where dragging changes the output (a release
+  // without a preview), endAutoApplyDrag marks the pipeline itself.
+  vtkSMProxy* filter = this->proxy();
+  vtkClientServerStream stream;
+  stream << vtkClientServerStream::Invoke << VTKOBJECT(filter) << "SetDragging"
+         << (dragging ? 1 : 0) << vtkClientServerStream::End;
+  filter->GetSession()->ExecuteStream(filter->GetLocation(), stream, false);
+}
+
 bool pqDeformationHandlePropertyWidget::canPreview()
 {
   pqView* view = this->view();
@@ -530,7 +543,7 @@ void pqDeformationHandlePropertyWidget::beginAutoApplyDrag(bool preview)
   vtkSMPropertyHelper(property).Set(0);
   view->getViewProxy()->UpdateVTKObjects();
   // As the VTK widget does: a few as-rigid-as-possible iterations a frame, settled on release.
-  this->proxy()->InvokeCommand("DraggingOn");
+  this->setDragging(true);
   this->endPreview(); // one left from a drag whose values were never applied
   this->Previewing = preview && this->canPreview();
   if (this->Previewing)
@@ -546,7 +559,7 @@ void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
   {
     return;
   }
-  this->proxy()->InvokeCommand("DraggingOff");
+  this->setDragging(false);
   pqView* view = this->view();
   if (view)
   {

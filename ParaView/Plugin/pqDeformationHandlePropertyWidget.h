@@ -84,6 +84,8 @@ private:
   void connectPreview(bool connect);
   // Whether a drag can be previewed: the filter runs where the view renders.
   bool canPreview();
+  // The filter's Dragging, set without marking the pipeline modified.
+  void setDragging(bool dragging);
   // Whether the handle's translation or rotation waits to be applied.
   bool hasUnappliedMotion();
   // Gives the view's surface back to the pipeline.

@@ -5,7 +5,7 @@ panel has it rendered: where the drag is previewed (the filter solves in the pro
 renders), the preview draws the move and the pipeline updates once, on release; otherwise each
 frame first applies the handle's values, as Auto Apply does. Run in the GUI's own Python:
 
-    LAPLACIAN_BENCH="MESH ROI_FRACTION [FRAMES] [MODE]" paraview \\
+    LAPLACIAN_BENCH="MESH ROI_FRACTION [FRAMES] [MODE] [DRAGS]" paraview \\
       --plugin-search-paths=build/paraview/lib/paraview-5.11/plugins/LaplacianEditing \\
       --plugins=LaplacianEditing --script=ParaView/Testing/DragFrameRate.py
 
@@ -14,12 +14,15 @@ resolutions (sphere:2000x1002 has 2M points and carries point normals). The hand
 point 0 (on a sphere, the point nearest (0.5, 0, 0), on the equator) with a radius of 3% of the
 bounding-box diagonal, or a third of the ROI radius if that is less; the ROI radius is
 ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode name (None,
-Explicit, Implicit or ARAP; default None). The view is 800 x 600. Before the drag, ten still
+Explicit, Implicit or ARAP; default None); DRAGS (default 1) drags in a row, the figures of the
+last of which are reported as well ("later_drag": a region's still part is built by its first). The view is 800 x 600. Before the drag, ten still
 renders of the same scene are timed (their median is still_ms). Prints one JSON line to
 LAPLACIAN_BENCH_OUTPUT (default: standard output): the first frame's milliseconds (a preview
 builds the still part of the surface there) and the median of the others (frame_ms), of which
 updating the pipeline (filter_ms, without a preview), frame_ms over still_ms, whether the drag
-was previewed, and the release's milliseconds (its update and render)."""
+was previewed, and the release's milliseconds (its update and render), in steps (the release
+event, the pipeline update, the render) and as a CLOCK_MONOTONIC window to cut a profile with:
+`perf record -k mono -g -o FILE -- paraview ...`, then `perf report --time START,END`."""
 import json
 import math
 import os
@@ -79,7 +82,7 @@ def drag(deform, view, frames):
     import ViewEvents as gui
     widget = gui.handle_widgets(view)[0]
     events = gui.ViewEvents(view)
-    x, y = events.display(deform.HandleCenter)
+    x, y = events.display([c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)])
 
     def send(name, y_now):
         events.send(name, (x, y_now))
@@ -88,6 +91,7 @@ def drag(deform, view, frames):
     send("MouseMoveEvent", y)
     send("LeftButtonPressEvent", y)
     times, update, previewed = [], 0.0, True
+    first = time.monotonic()
     for frame in range(1, frames + 1):
         start = time.perf_counter()
         send("MouseMoveEvent", y + 2 * frame)
@@ -100,12 +104,35 @@ def drag(deform, view, frames):
             update += time.perf_counter() - before
         simple.Render(view)
         times.append(time.perf_counter() - start)
-    before = time.perf_counter()
+        if frame == 1:
+            release = {"first_frame_window": [first, time.monotonic()]}
+    # The release, in its steps (and their CLOCK_MONOTONIC times, to cut a `perf record -k mono`).
+    release["start"] = time.monotonic()
     send("LeftButtonReleaseEvent", y + 2 * frames)
     deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")  # Auto Apply, settled
+    release["event"] = time.monotonic()
     deform.UpdatePipeline()
+    release["update"] = time.monotonic()
     simple.Render(view)
-    return times, update, time.perf_counter() - before, previewed
+    release["render"] = time.monotonic()
+    return times, update, release, previewed
+
+
+def figures(times, update, release, frames, still):
+    """One drag's figures: its first frame, the median of the others, the release."""
+    frame = sorted(times[1:] or times)[len(times[1:] or times) // 2]
+    return {"first_frame_ms": round(1000.0 * times[0], 1),
+            "frame_ms": round(1000.0 * frame, 2),
+            "frame_over_still": round(frame / still, 2),
+            "first_frame_over_still": round(times[0] / still, 2),
+            "filter_ms": round(1000.0 * update / frames, 2),
+            "release_ms": round(1000.0 * (release["render"] - release["start"]), 1),
+            "release_over_still": round((release["render"] - release["start"]) / still, 2),
+            "release_steps_ms": {step: round(1000.0 * (release[step] - release[last]), 1)
+                                 for last, step in (("start", "event"), ("event", "update"),
+                                                    ("update", "render"))},
+            "release_window": [release["start"], release["render"]],
+            "first_frame_window": release["first_frame_window"]}
 
 
 def main(out):
@@ -114,6 +141,7 @@ def main(out):
     frames = int(args[2]) if len(args) > 2 else 60
     mode = args[3] if len(args) > 3 else "None"
     mode = {"ARAP": "As rigid as possible"}.get(mode, mode)
+    drags = int(args[4]) if len(args) > 4 else 1
     deform, view = edit(load(mesh_path), mesh_path, fraction, mode)
     still = still_render_seconds(view)
 
@@ -122,20 +150,20 @@ def main(out):
         return deform.GetProperty(name).SMProperty.GetElement(0)
 
     factorizations = info("NumberOfFactorizations")
-    times, update, release, previewed = drag(deform, view, frames)
-    frame = sorted(times[1:] or times)[len(times[1:] or times) // 2]
-    print(json.dumps({"mesh": os.path.basename(mesh_path), "mode": mode,
-                      "roi_vertices": info("NumberOfROIVertices"), "frames": frames,
-                      "previewed": previewed, "fps": round(frames / sum(times), 2),
-                      "first_frame_ms": round(1000.0 * times[0], 1),
-                      "frame_ms": round(1000.0 * frame, 2),
-                      "still_ms": round(1000.0 * still, 2),
-                      "frame_over_still": round(frame / still, 2),
-                      "filter_ms": round(1000.0 * update / frames, 2),
-                      "release_ms": round(1000.0 * release, 1),
-                      "moved": math.dist(deform.HandleTranslation, [0.0, 0.0, 0.0]),
-                      "refactorizations": info("NumberOfFactorizations") - factorizations}),
-          file=out, flush=True)
+    each = []
+    for _ in range(drags):
+        times, update, release, previewed = drag(deform, view, frames)
+        each.append(figures(times, update, release, frames, still))
+    result = {"mesh": os.path.basename(mesh_path), "mode": mode,
+              "roi_vertices": info("NumberOfROIVertices"), "frames": frames,
+              "previewed": previewed, "fps": round(frames / sum(times), 2),
+              "still_ms": round(1000.0 * still, 2)}
+    result.update(each[0])
+    if drags > 1:
+        result["later_drag"] = each[-1]
+    result["moved"] = math.dist(deform.HandleTranslation, [0.0, 0.0, 0.0])
+    result["refactorizations"] = info("NumberOfFactorizations") - factorizations
+    print(json.dumps(result), file=out, flush=True)
 
 
 # Run from the repository's root, or with LAPLACIAN_TESTING_DIR (the GUI's script has no __file__).

@@ -20,6 +20,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
+#include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -404,6 +405,55 @@ TEST(OutputArray, WritesItsTuplesInPlaceAndCopiesOnWrite)
   vtkDataArray* second = output.Update(rest, ids, 3, write);
   EXPECT_NE(second, first) << "copy on write";
   EXPECT_EQ(output.GetNumberOfCopies(), 2);
+}
+
+TEST(OutputArray, KeepsTheRangesVTKCachesRightWithoutAPassOverTheArray)
+{
+  // A ramp of 3-component tuples; each update writes tuple 5, whose value sets or leaves the
+  // extremes. The ranges VTK caches must be those of the array, carried over where the written
+  // tuple held no extreme (ParaView asks for them after every update).
+  vtkNew<vtkDoubleArray> rest;
+  rest->SetNumberOfComponents(3);
+  rest->SetNumberOfTuples(100);
+  for (vtkIdType i = 0; i < 100; ++i)
+  {
+    rest->SetTuple3(i, i, -i, 0.5 * i);
+  }
+  lep::OutputArray output;
+  double value = 0.0;
+  vtkIdType at = 5;
+  auto write = [&](vtkDataArray* array) { array->SetTuple3(at, value, value, value); };
+  auto expectFreshRanges = [](vtkDataArray* array, const char* when) {
+    vtkNew<vtkDoubleArray> fresh;
+    fresh->DeepCopy(array);
+    for (int c = -1; c < 3; ++c)
+    {
+      double kept[2], computed[2];
+      array->GetRange(kept, c);
+      fresh->GetRange(computed, c);
+      EXPECT_EQ(kept[0], computed[0]) << when << ", component " << c;
+      EXPECT_EQ(kept[1], computed[1]) << when << ", component " << c;
+      array->GetFiniteRange(kept, c);
+      fresh->GetFiniteRange(computed, c);
+      EXPECT_EQ(kept[0], computed[0]) << when << ", finite component " << c;
+      EXPECT_EQ(kept[1], computed[1]) << when << ", finite component " << c;
+    }
+  };
+  value = 7.0;
+  vtkDataArray* array = output.Update(rest, { 5 }, 1, write);
+  expectFreshRanges(array, "after the copy");
+  value = 500.0; // beyond every extreme: a new maximum, the minima kept
+  ASSERT_EQ(output.Update(rest, { 5 }, 2, write), array);
+  EXPECT_TRUE(array->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()))
+    << "carried over, not dropped";
+  expectFreshRanges(array, "after a write beyond the range");
+  value = 3.0; // the written tuple held the maxima: those are for VTK to find again
+  ASSERT_EQ(output.Update(rest, { 5 }, 3, write), array);
+  expectFreshRanges(array, "after a write back inside the range");
+  value = -1000.0;
+  at = 6;
+  ASSERT_EQ(output.Update(rest, { 6 }, 4, write), array); // tuple 5 back to rest, 6 written
+  expectFreshRanges(array, "after a write elsewhere");
 }
 
 TEST(OutputWriter, WritesOnlyTheRegionAndItsRoles)
