@@ -16,6 +16,7 @@
 // line on stderr, exit code 1.
 #include "EditingScene.h"
 #include "MeshReader.h"
+#include "XDisplay.h"
 
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkDeformationHandleWidget.h"
@@ -246,6 +247,12 @@ int main(int argc, char* argv[])
   vtkNew<vtkTextActor> help, status;
   AddTexts(renderer, help, status);
   vtkNew<vtkRenderWindow> window;
+  std::string error;
+  if (!XDisplay::Attach(window, error)) // before the interactor can use a display it never checks
+  {
+    std::cerr << error << "\n";
+    return EXIT_FAILURE;
+  }
   window->SetSize(900, 700);
   window->SetWindowName("Laplacian mesh editing");
   window->AddRenderer(renderer);

@@ -17,6 +17,7 @@ A file it cannot read: one line on stderr, exit code 1.
 Needs PYTHONPATH=build/vtk/lib/python3/dist-packages (see the README).
 """
 import argparse
+import ctypes
 import math
 import os
 import sys
@@ -134,6 +135,25 @@ def protruding_point(mesh, view):
     return best
 
 
+def attach_display(window):
+    """Opens the X display and gives it to `window`, before the interactor can use a display it
+    never checks (VTK 9.1's dies with a segmentation fault where there is none). Returns an
+    error message, or None."""
+    if not window.IsA("vtkXOpenGLRenderWindow"):
+        return None  # another platform's window
+    x11 = ctypes.cdll.LoadLibrary("libX11.so.6")
+    x11.XOpenDisplay.restype = ctypes.c_void_p
+    x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+    display = x11.XOpenDisplay(None)
+    if not display:
+        name = os.environ.get("DISPLAY")
+        where = f"'{name}': no X server answers there" if name else "(DISPLAY is unset)"
+        return (f"Cannot open the X display {where}. The editor needs a window: run it on a "
+                "desktop, through ssh -X, or with --offscreen under xvfb-run -a.")
+    window.SetDisplayId(f"_{display:016x}_p_void")  # VTK's form of a void pointer
+    return None
+
+
 def make_filter(mesh, mode):
     deform = laplacianediting.vtkLaplacianDeformationFilter()
     if mesh is not None:
@@ -202,6 +222,10 @@ def main(argv):
     status.SetPosition(0.01, 0.97)
 
     window = vtkRenderWindow()
+    error = attach_display(window)
+    if error:
+        print(error, file=sys.stderr)
+        return 1
     window.SetSize(900, 700)
     window.SetWindowName("Laplacian mesh editing")
     window.AddRenderer(renderer)

@@ -18,6 +18,7 @@
 // update's as-rigid-as-possible iterations (mode 3), and that mode's energy at the last frame
 // of the drag and after the release, over the energy converged at the same pose.
 #include "MeshReader.h"
+#include "XDisplay.h"
 
 #include "vtkLaplacianDeformationFilter.h"
 
@@ -82,6 +83,7 @@ struct Scene
 
   Scene(vtkPolyData* mesh, vtkIdType handle, double roiFraction, int mode)
   {
+    XDisplay::AttachOrExit(this->Window);
     const double diagonal = mesh->GetLength();
     this->Filter->SetInputData(mesh);
     this->Filter->SetHandleCenter(mesh->GetPoint(handle));
@@ -148,6 +150,7 @@ struct Trace
   vtkLaplacianDeformationFilter* Filter;
   Clock::time_point Last;
   double Slowest = 0.0;
+  double FirstFrame = -1.0; // the drag's first frame, after the press
   std::vector<int> Iterations;
   std::vector<double> Energies;
   std::size_t DragUpdates = 0; // the updates before the release
@@ -169,6 +172,7 @@ struct Trace
       else
       {
         t.Slowest = std::max(t.Slowest, frame);
+        t.FirstFrame = t.FirstFrame < 0.0 ? frame : t.FirstFrame;
       }
       t.Last = Clock::now();
     });
@@ -269,7 +273,9 @@ int main(int argc, char* argv[])
             << ", \"factorizations\": " << filter->GetNumberOfFactorizations()
             << ", \"output_copies\": " << filter->GetNumberOfOutputCopies()
             << ", \"slowest_frame_seconds\": " << trace.Slowest
-            << ", \"release_seconds\": " << trace.ReleaseSeconds;
+            << ", \"first_frame_over_still\": " << trace.FirstFrame / still
+            << ", \"release_seconds\": " << trace.ReleaseSeconds
+            << ", \"release_over_still\": " << trace.ReleaseSeconds / still;
   if (filter->GetRotationMode() == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE &&
     !trace.Energies.empty())
   {

@@ -84,6 +84,7 @@ struct Scene
     this->Renderer = EditingScene::MakeRenderer(this->Filter->GetOutput(), full);
     vtkActor* actor = vtkActor::SafeDownCast(this->Renderer->GetActors()->GetItemAsObject(0));
     actor->GetMapper()->SetInputConnection(this->Filter->GetOutputPort());
+    XDisplay::AttachOrExit(this->Window); // checked before the interactor uses it
     this->Window->SetSize(500, 500);
     this->Window->SetMultiSamples(0);
     this->Window->AddRenderer(this->Renderer);

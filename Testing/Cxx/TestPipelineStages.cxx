@@ -422,7 +422,7 @@ TEST(OutputArray, KeepsTheRangesVTKCachesRightWithoutAPassOverTheArray)
   lep::OutputArray output;
   double value = 0.0;
   vtkIdType at = 5;
-  auto write = [&](vtkDataArray* array) { array->SetTuple3(at, value, value, value); };
+  auto write = [&](vtkDataArray* array) { array->SetTuple3(at, value, -value, 0.5 * value); };
   auto expectFreshRanges = [](vtkDataArray* array, const char* when) {
     vtkNew<vtkDoubleArray> fresh;
     fresh->DeepCopy(array);

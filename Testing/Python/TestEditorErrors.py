@@ -1,6 +1,7 @@
 """Both interactive editors on files they cannot read (missing, unknown or no extension, corrupt,
-without polygons): required, exit code 1 and exactly one line on stderr that says what is wrong
-(and, for an unknown format, which formats work).
+without polygons) and without an X display (DISPLAY unset, or naming no server): required, exit
+code 1 and exactly one line on stderr that says what is wrong (and, for an unknown format,
+which formats work; for a display, what to do). Neither crashes.
 
     TestEditorErrors.py CXX_EDITOR PYTHON_EDITOR
 """
@@ -14,10 +15,11 @@ CXX_EDITOR, PYTHON_EDITOR = sys.argv[1], sys.argv[2]
 
 
 class TestEditorErrors(unittest.TestCase):
-    def run_editors(self, path, expected):
+    def run_editors(self, path, expected, environment=None):
         for command in ([CXX_EDITOR], [sys.executable, PYTHON_EDITOR]):
             with self.subTest(editor=os.path.basename(command[-1]), path=os.path.basename(path)):
-                run = subprocess.run(command + [path], capture_output=True, text=True, timeout=60)
+                run = subprocess.run(command + [path], capture_output=True, text=True, timeout=60,
+                                     env=environment)
                 lines = [line for line in run.stderr.splitlines() if line.strip()]
                 self.assertEqual(run.returncode, 1, run.stderr)
                 self.assertEqual(len(lines), 1, run.stderr)
@@ -52,6 +54,14 @@ class TestEditorErrors(unittest.TestCase):
             mesh.write("v 0 0 0\nv 1 0 0\n")
             mesh.flush()
             self.run_editors(mesh.name, ["holds no polygons"])
+
+
+    def test_no_x_display(self):
+        mesh = os.path.join(os.environ["LAPLACIAN_EDITING_DATA_DIR"], "spot.obj")
+        unreachable = dict(os.environ, DISPLAY=":12345")  # a display no server listens on
+        self.run_editors(mesh, ["Cannot open the X display ':12345'", "xvfb-run"], unreachable)
+        unset = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
+        self.run_editors(mesh, ["Cannot open the X display (DISPLAY is unset)"], unset)
 
 
 if __name__ == "__main__":

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "BumpyPlane.h"
+#include "XDisplay.h"
 #include "vtkLaplacianDeformationFilter.h"
 
 namespace EditingScene
@@ -148,6 +149,7 @@ inline vtkSmartPointer<vtkRenderWindow> MakeComparisonWindow(
   int panelWidth = 400, int height = 400, const double* frameBounds = nullptr)
 {
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  XDisplay::AttachOrExit(window);
   const int panels = static_cast<int>(meshes.size());
   window->SetSize(panelWidth * panels, height);
   window->SetMultiSamples(0);
