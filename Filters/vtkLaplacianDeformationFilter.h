@@ -666,6 +666,7 @@ protected:
 
 private:
   friend class vtkLaplacianDragPreview;
+  friend class vtkLaplacianVolumeDeformationFilter; // runs the boundary's edit, reads its moved points
 
   // The properties that shape the system and the rotation model.
   LaplacianEditing::Pipeline::SolverSettings Settings();

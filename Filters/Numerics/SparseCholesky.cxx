@@ -1,9 +1,10 @@
 #include "SparseCholesky.h"
 
+#include "Stopwatch.h"
+
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
-#include <chrono>
 #include <thread>
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
 #include "CholmodFactor.h"
@@ -48,13 +49,6 @@ bool SparseCholesky::IsAvailable(SolverBackend backend)
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 struct FactorReport
 {
   std::string Error;
@@ -83,10 +77,10 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(const SparseMatrix& m
 {
   auto backend = std::make_unique<CholmodBackend>();
   backend->Factor.SetManySolves(manySolves);
-  Clock::time_point start = Clock::now();
+  Stopwatch watch;
   const int parts = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   report.Error = backend->Factor.Analyze(matrix, ordering, parts, blockSize);
-  report.AnalysisSeconds = SecondsSince(start);
+  report.AnalysisSeconds = watch.Seconds();
   report.TooLarge = backend->Factor.IsTooLarge();
   report.FactorBytes = backend->Factor.GetPredictedBytes();
   report.ParallelShare = backend->Factor.GetParallelShare();
@@ -101,9 +95,9 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(const SparseMatrix& m
   {
     return nullptr;
   }
-  start = Clock::now();
+  watch = Stopwatch();
   const bool factored = backend->Factor.Factorize(matrix);
-  report.FactorizationSeconds = SecondsSince(start);
+  report.FactorizationSeconds = watch.Seconds();
   if (!factored)
   {
     report.Error = NotPositiveDefinite;
@@ -117,12 +111,12 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithEigen(
   const SparseMatrix& matrix, FactorReport& report)
 {
   auto backend = std::make_unique<EigenBackend>();
-  Clock::time_point start = Clock::now();
+  Stopwatch watch;
   backend->Factor.analyzePattern(matrix);
-  report.AnalysisSeconds = SecondsSince(start);
-  start = Clock::now();
+  report.AnalysisSeconds = watch.Seconds();
+  watch = Stopwatch();
   backend->Factor.factorize(matrix);
-  report.FactorizationSeconds = SecondsSince(start);
+  report.FactorizationSeconds = watch.Seconds();
   if (backend->Factor.info() != Eigen::Success)
   {
     report.Error = NotPositiveDefinite;
@@ -144,10 +138,10 @@ std::unique_ptr<SparseCholesky::Backend> FactorAcrossProcesses(
   const SparseMatrix& matrix, DistributedSolver& solver, FactorReport& report)
 {
   auto backend = std::make_unique<DistributedBackend>();
-  const Clock::time_point start = Clock::now();
+  const Stopwatch watch;
   report.Error.clear();
   backend->Factor = solver.Factorize(matrix, report.Error);
-  report.FactorizationSeconds = SecondsSince(start);
+  report.FactorizationSeconds = watch.Seconds();
   if (!backend->Factor)
   {
     return nullptr;

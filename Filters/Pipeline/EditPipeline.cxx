@@ -1,49 +1,24 @@
 #include "EditPipeline.h"
 
+#include "SMPFor.h"
+#include "Stopwatch.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkErrorCode.h"
 #include "vtkPolyData.h"
-#include "vtkSMP.h"
-#include "vtkSMPTools.h"
-#include "vtkVersionMacros.h"
 
 #include <algorithm>
-#include <chrono>
-#include <cstring>
 
 namespace LaplacianEditing
 {
 namespace Pipeline
 {
-namespace
-{
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-}
-
 EditPipeline::EditPipeline(vtkAlgorithm* filter, std::function<void(unsigned long)> setErrorCode)
   : Filter(filter)
   , SetErrorCode(std::move(setErrorCode))
 {
   this->Writer.SetFilter(filter);
-  // The core's per-move loops run on VTK's SMP backend. ParaView's VTK runs it on one thread
-  // unless told otherwise (VTK_SMP_BACKEND_IN_USE): the core's loops take VTK's thread pool
-  // there, which halves an ARAP drag's frame on two cores.
-  this->Editor.SetParallelFor([](int begin, int end, const std::function<void(int, int)>& body) {
-    auto run = [&] { vtkSMPTools::For(begin, end, [&](int first, int last) { body(first, last); }); };
-#if VTK_SMP_ENABLE_STDTHREAD && VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
-    if (std::strcmp(vtkSMPTools::GetBackend(), "Sequential") == 0)
-    {
-      vtkSMPTools::LocalScope(vtkSMPTools::Config{ std::string("STDThread") }, run);
-      return;
-    }
-#endif
-    run();
-  });
+  this->Editor.SetParallelFor(SMPFor);
 }
 
 void EditPipeline::BeginUpdate()
@@ -98,10 +73,10 @@ bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& sourc
   this->Solved = this->Solve(source);
   if (this->Solved && output)
   {
-    const Clock::time_point start = Clock::now();
+    const Stopwatch watch;
     const OutputEdit edit = this->GetEdit();
     this->Write(rest, output, &edit, roles, colors);
-    this->LastFacts.SolveTime += SecondsSince(start);
+    this->LastFacts.SolveTime += watch.Seconds();
   }
   this->Filter->UpdateProgress(1.0);
   return this->Solved;
@@ -109,7 +84,7 @@ bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& sourc
 
 bool EditPipeline::UpdateSurface(vtkPolyData* rest, const Reach& reach, bool merge)
 {
-  const Clock::time_point start = Clock::now();
+  const Stopwatch watch;
   bool rebuilt = false;
   const std::string error = this->Surface.Update(rest, merge, reach, rebuilt);
   if (rebuilt)
@@ -126,7 +101,7 @@ bool EditPipeline::UpdateSurface(vtkPolyData* rest, const Reach& reach, bool mer
   if (rebuilt)
   {
     this->LastFacts.NumberOfSurfaceVertices = this->Surface.GetMesh()->GetNumberOfVertices();
-    this->LastFacts.TopologyTime = SecondsSince(start);
+    this->LastFacts.TopologyTime = watch.Seconds();
   }
   return true;
 }
@@ -148,7 +123,7 @@ bool EditPipeline::UpdateRegion(vtkPolyData* rest, EditSource& source, const Sol
   system.Points = choice.Points;
   system.PointsVersion = choice.PointsVersion;
   system.PointWeight = choice.PointWeight;
-  const Clock::time_point start = Clock::now();
+  const Stopwatch watch;
   const EditStatus status = this->Editor.UpdateRegion(choice.Request, choice.Labels, system);
   if (!this->Check(status.Ok() ? std::string() : "Cannot edit: " + status.Error + "."))
   {
@@ -159,7 +134,7 @@ bool EditPipeline::UpdateRegion(vtkPolyData* rest, EditSource& source, const Sol
     return true;
   }
   ++this->ModelVersion;
-  this->LastFacts.SetupTime = SecondsSince(start);
+  this->LastFacts.SetupTime = watch.Seconds();
   const EditRegion& region = this->Editor.GetRegion();
   this->Surface.IndexRegion(region);
   this->Normals.Index(rest, this->Surface);
@@ -173,7 +148,7 @@ bool EditPipeline::UpdateRegion(vtkPolyData* rest, EditSource& source, const Sol
 bool EditPipeline::UpdateRotationModel(const SolverSettings& settings)
 {
   this->Mode = static_cast<RotationMode>(settings.RotationMode);
-  const Clock::time_point start = Clock::now();
+  const Stopwatch watch;
   const EditStatus status =
     this->Editor.UpdateRotationModel(settings.Rotation(this->Editor.GetRegion().Radius, this->Surface.GetScale()));
   if (!this->Check(status.Ok() ? std::string() : "Cannot edit: " + status.Error + "."))
@@ -184,7 +159,7 @@ bool EditPipeline::UpdateRotationModel(const SolverSettings& settings)
   if (status.Work != RebuiltNothing)
   {
     ++this->ModelVersion;
-    facts.SetupTime += SecondsSince(start);
+    facts.SetupTime += watch.Seconds();
     const bool firstOrderEnergy =
       settings.RotationMode == static_cast<int>(RotationMode::AsRigidAsPossible) ||
       (settings.RotationMode == static_cast<int>(RotationMode::Implicit) &&
@@ -213,11 +188,11 @@ bool EditPipeline::Solve(EditSource& source)
     return false;
   }
   this->Maps = std::move(motions.Maps);
-  const Clock::time_point start = Clock::now();
+  const Stopwatch watch;
   const EditStatus status = this->Editor.Solve(
     this->Maps, this->Solution, motions.HasPoints ? &motions.Points : nullptr);
   Facts& facts = this->LastFacts;
-  facts.SolveTime = SecondsSince(start);
+  facts.SolveTime = watch.Seconds();
   facts.LargestPointMiss = this->Editor.GetLargestPointMiss();
   if (this->Mode == RotationMode::AsRigidAsPossible)
   {

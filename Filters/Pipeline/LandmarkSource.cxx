@@ -1,9 +1,10 @@
 #include "LandmarkSource.h"
 
+#include "Stopwatch.h"
+
 #include "vtkObject.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace LaplacianEditing
 {
@@ -12,12 +13,12 @@ namespace Pipeline
 std::string LandmarkSource::ChooseRegion(
   vtkPolyData* /*rest*/, const SurfaceAdapter& surface, RegionChoice& region)
 {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   bool rebound = false;
   const std::string error =
     this->Binder.Update(this->Sources, surface, this->MaximumDistance, rebound);
   this->BindingTime =
-    rebound ? std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() : 0.0;
+    rebound ? watch.Seconds() : 0.0;
   if (!error.empty())
   {
     return error;

@@ -299,9 +299,15 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   CachedRanges ranges;
   if (derived)
   {
-    changing = buffer.Written;
-    changing.insert(changing.end(), ids.begin(), ids.end());
-    std::sort(changing.begin(), changing.end());
+    changing = ids;
+    if (buffer.Written != ids)
+    {
+      changing.insert(changing.end(), buffer.Written.begin(), buffer.Written.end());
+    }
+    if (!std::is_sorted(changing.begin(), changing.end()))
+    {
+      std::sort(changing.begin(), changing.end());
+    }
     changing.erase(std::unique(changing.begin(), changing.end()), changing.end());
     ranges.Capture(buffer.Array, changing);
   }

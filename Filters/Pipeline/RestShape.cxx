@@ -1,17 +1,19 @@
 #include "RestShape.h"
 
-#include "SurfaceAdapter.h"
+#include "ContentTime.h"
 
 #include "vtkPoints.h"
+
+#include <cstring>
 
 namespace LaplacianEditing
 {
 namespace Pipeline
 {
 
-vtkPolyData* RestShape::Get(vtkPolyData* input)
+vtkPointSet* RestShape::Get(vtkPointSet* input)
 {
-  const vtkMTimeType inputTime = SurfaceAdapter::GetContentTime(input);
+  const vtkMTimeType inputTime = ContentTime(input);
   if (input != this->LastInput || inputTime != this->CommittedInput)
   {
     this->Commits.clear();
@@ -21,6 +23,10 @@ vtkPolyData* RestShape::Get(vtkPolyData* input)
   if (this->Commits.empty())
   {
     return input;
+  }
+  if (!this->CommittedRest || std::strcmp(this->CommittedRest->GetClassName(), input->GetClassName()) != 0)
+  {
+    this->CommittedRest.TakeReference(input->NewInstance());
   }
   if (this->CommittedRest->GetPoints() != this->Commits.back())
   {
@@ -48,7 +54,7 @@ bool RestShape::Undo()
   return true;
 }
 
-bool RestShape::GetPoint(vtkPolyData* input, vtkIdType id, double point[3]) const
+bool RestShape::GetPoint(vtkPointSet* input, vtkIdType id, double point[3]) const
 {
   if (!input || id < 0 || id >= input->GetNumberOfPoints())
   {

@@ -6,8 +6,8 @@
 #ifndef LaplacianEditing_Pipeline_RestShape_h
 #define LaplacianEditing_Pipeline_RestShape_h
 
-#include "vtkNew.h"
-#include "vtkPolyData.h" // for vtkNew<vtkPolyData>
+#include "vtkPointSet.h" // for vtkSmartPointer<vtkPointSet>
+#include "vtkPolyData.h" // for the vtkPolyData overload
 #include "vtkSmartPointer.h"
 
 #include <vector>
@@ -21,9 +21,13 @@ namespace Pipeline
 class RestShape
 {
 public:
-  /// The rest surface of an edit of `input`: `input` itself, or, after a commit, a shallow copy
-  /// of it with the committed points.
-  vtkPolyData* Get(vtkPolyData* input);
+  /// The rest shape of an edit of `input` (a surface or a volume mesh): `input` itself, or,
+  /// after a commit, a shallow copy of it with the committed points.
+  vtkPointSet* Get(vtkPointSet* input);
+  vtkPolyData* Get(vtkPolyData* input)
+  {
+    return static_cast<vtkPolyData*>(this->Get(static_cast<vtkPointSet*>(input)));
+  }
 
   /// Makes a copy of `points` the rest positions of the next edit.
   void Commit(vtkPoints* points);
@@ -32,14 +36,14 @@ public:
   int GetNumberOfCommits() const { return static_cast<int>(this->Commits.size()); }
 
   /// The rest position of point `id` of `input`; false for an id it does not have.
-  bool GetPoint(vtkPolyData* input, vtkIdType id, double point[3]) const;
+  bool GetPoint(vtkPointSet* input, vtkIdType id, double point[3]) const;
 
 private:
   // Committed rest positions, newest last, for the input of the given content time.
   std::vector<vtkSmartPointer<vtkPoints>> Commits;
   vtkMTimeType CommittedInput = 0;
-  vtkPolyData* LastInput = nullptr;
-  vtkNew<vtkPolyData> CommittedRest;
+  vtkPointSet* LastInput = nullptr;
+  vtkSmartPointer<vtkPointSet> CommittedRest;
 };
 
 }

@@ -1,5 +1,7 @@
 #include "SurfaceAdapter.h"
 
+#include "ContentTime.h"
+
 #include "CoincidentPoints.h"
 #include "SurfaceMesh.h"
 
@@ -48,22 +50,7 @@ void VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const
 
 vtkMTimeType SurfaceAdapter::GetContentTime(vtkPolyData* surface)
 {
-  vtkMTimeType time = surface->GetPoints() ? surface->GetPoints()->GetMTime() : 0;
-  for (vtkCellArray* cells :
-    { surface->GetVerts(), surface->GetLines(), surface->GetPolys(), surface->GetStrips() })
-  {
-    time = std::max(time, cells ? cells->GetMTime() : 0);
-  }
-  for (vtkFieldData* attributes : { static_cast<vtkFieldData*>(surface->GetPointData()),
-         static_cast<vtkFieldData*>(surface->GetCellData()) })
-  {
-    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
-    {
-      vtkAbstractArray* array = attributes->GetAbstractArray(i);
-      time = std::max(time, array ? array->GetMTime() : 0);
-    }
-  }
-  return time;
+  return ContentTime(surface);
 }
 
 vtkIdType SurfaceAdapter::FindNearestCorner(vtkPolyData* input, const double point[3])

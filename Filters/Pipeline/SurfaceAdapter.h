@@ -56,9 +56,8 @@ public:
   /// The polygon corner of `input` nearest `point`, -1 if there is none (one pass).
   static vtkIdType FindNearestCorner(vtkPolyData* input, const double point[3]);
 
-  /// When the points, the cells or a point or cell array of `surface` last changed. Unlike
-  /// GetMTime(), not when a pipeline copies the same arrays into the data set anew (ParaView's
-  /// post filter does on every update), which would refactor every move and drop the commits.
+  /// When the points, the cells or a point or cell array of `surface` last changed
+  /// (ContentTime).
   static vtkMTimeType GetContentTime(vtkPolyData* surface);
 
   /// The input id of each point of the mesh (SurfaceMesh::GetVertexOfPoint's points), and the

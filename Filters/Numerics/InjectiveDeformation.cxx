@@ -1,0 +1,615 @@
+#include "InjectiveDeformation.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace LaplacianEditing
+{
+namespace
+{
+constexpr double Infinity = std::numeric_limits<double>::infinity();
+// A step goes this fraction of the way to the first flat tetrahedron at most.
+constexpr double SafeFraction = 0.9;
+// Armijo's sufficient decrease.
+constexpr double SufficientDecrease = 1e-4;
+constexpr int MaximumHalvings = 40;
+// AQP's momentum, (1 - sqrt(1/eta)) / (1 + sqrt(1/eta)) with the paper's eta = 100.
+constexpr double Momentum = (1.0 - 0.1) / (1.0 + 0.1);
+// The continuation's first pull (as stiff as the mesh around a point) and its growth a stage.
+constexpr double FirstWeight = 1.0;
+constexpr double ContinuationRatio = 10.0;
+// The earlier stages only bring the points near: they stop at this relative decrease.
+constexpr double StageTolerance = 1e-2;
+// A step this short says the proxy has lost the energy's shape: it is reweighted.
+constexpr double StallStep = 0.05;
+
+using Matrix3 = Eigen::Matrix3d;
+
+// Points one row each, contiguous: the loops over tetrahedra gather four rows a tetrahedron.
+using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// The edge matrix [x1 - x0, x2 - x0, x3 - x0] of tetrahedron `row`.
+template <typename Points>
+Matrix3 Edges(const Points& x, const Tetrahedra& tets, int row)
+{
+  Matrix3 edges;
+  const Vector3 origin = x.row(tets(row, 0)).transpose();
+  for (int k = 0; k < 3; ++k)
+  {
+    edges.col(k) = x.row(tets(row, k + 1)).transpose() - origin;
+  }
+  return edges;
+}
+
+// Appends the solutions of a + b t + c t^2 = 0 (c may be 0) to roots[count].
+void QuadraticRoots(double a, double b, double c, double* roots, int& count)
+{
+  const double scale = std::abs(a) + std::abs(b);
+  if (std::abs(c) <= 1e-14 * scale)
+  {
+    if (b != 0.0)
+    {
+      roots[count++] = -a / b;
+    }
+    return;
+  }
+  const double discriminant = b * b - 4.0 * c * a;
+  if (discriminant < 0.0)
+  {
+    return;
+  }
+  // The root of larger magnitude without cancellation, the other from the product.
+  const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+  roots[count++] = q / c;
+  if (q != 0.0)
+  {
+    roots[count++] = a / q;
+  }
+}
+}
+
+double InjectiveDeformation::SmallestPositiveRoot(
+  double a0, double a1, double a2, double a3, double below)
+{
+  // Most tetrahedra cannot flatten this soon: the polynomial stays above a0 - |a1| t - ... > 0.
+  if (a0 - below * (std::abs(a1) + below * (std::abs(a2) + below * std::abs(a3))) > 0.0)
+  {
+    return Infinity;
+  }
+  double roots[3];
+  int count = 0;
+  const double scale = std::abs(a0) + std::abs(a1) + std::abs(a2);
+  if (std::abs(a3) <= 1e-12 * scale)
+  {
+    QuadraticRoots(a0, a1, a2, roots, count);
+  }
+  else
+  {
+    // t^3 + p t^2 + q t + r = 0 (Numerical Recipes, 5.6).
+    const double p = a2 / a3, q = a1 / a3, r = a0 / a3;
+    const double Q = (p * p - 3.0 * q) / 9.0;
+    const double R = (2.0 * p * p * p - 9.0 * p * q + 27.0 * r) / 54.0;
+    if (R * R < Q * Q * Q)
+    {
+      const double theta = std::acos(std::clamp(R / std::sqrt(Q * Q * Q), -1.0, 1.0));
+      const double s = -2.0 * std::sqrt(Q);
+      const double third = 2.0 * M_PI / 3.0;
+      for (double shift : { 0.0, third, -third })
+      {
+        roots[count++] = s * std::cos(theta / 3.0 + shift) - p / 3.0;
+      }
+    }
+    else
+    {
+      const double A = -std::copysign(std::cbrt(std::abs(R) + std::sqrt(R * R - Q * Q * Q)), R);
+      roots[count++] = A + (A != 0.0 ? Q / A : 0.0) - p / 3.0;
+    }
+    // Newton polishes what the closed form lost to cancellation.
+    for (int k = 0; k < count; ++k)
+    {
+      double& t = roots[k];
+      for (int step = 0; step < 2; ++step)
+      {
+        const double f = a0 + t * (a1 + t * (a2 + t * a3));
+        const double df = a1 + t * (2.0 * a2 + t * 3.0 * a3);
+        if (df != 0.0)
+        {
+          t -= f / df;
+        }
+      }
+    }
+  }
+  double smallest = Infinity;
+  for (int k = 0; k < count; ++k)
+  {
+    if (roots[k] > 0.0 && std::isfinite(roots[k]))
+    {
+      smallest = std::min(smallest, roots[k]);
+    }
+  }
+  return smallest;
+}
+
+double InjectiveDeformation::CornerScaledJacobian(
+  const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d)
+{
+  const Vector3 u = b - a, v = c - a, w = d - a;
+  const double lengths = u.norm() * v.norm() * w.norm();
+  return lengths > 0.0 ? u.dot(v.cross(w)) / lengths : 0.0;
+}
+
+double InjectiveDeformation::TetrahedronScaledJacobian(
+  const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d)
+{
+  // Every corner sees the same determinant (six times the volume), with its orientation.
+  const double corners[4] = { CornerScaledJacobian(a, b, c, d), CornerScaledJacobian(b, a, d, c),
+    CornerScaledJacobian(c, a, b, d), CornerScaledJacobian(d, a, c, b) };
+  return std::sqrt(2.0) * *std::min_element(corners, corners + 4);
+}
+
+std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedra& tetrahedra,
+  const std::vector<PointKind>& kinds, double targetWeight, SolverBackend backend)
+{
+  const int n = static_cast<int>(rest.rows());
+  const int m = static_cast<int>(tetrahedra.rows());
+  if (static_cast<int>(kinds.size()) != n)
+  {
+    return "Each point needs a kind.";
+  }
+  this->Rest = rest;
+  this->Tets = tetrahedra;
+  this->Kinds = kinds;
+  this->FinalWeight = targetWeight;
+  this->Backend = backend;
+  this->RestInverse.resize(m);
+  this->Volume.resize(m);
+  for (int c = 0; c < m; ++c)
+  {
+    const Matrix3 edges = Edges(rest, tetrahedra, c);
+    const double determinant = edges.determinant();
+    if (!(determinant > 0.0))
+    {
+      return "A cell is flat or inverted at rest (corner tetrahedron " + std::to_string(c) + ").";
+    }
+    this->RestInverse[c] = edges.inverse();
+    this->Volume[c] = determinant / 6.0;
+  }
+  this->TotalVolume = this->Volume.sum();
+
+  this->Unknown.assign(n, -1);
+  this->Unknowns.clear();
+  for (int p = 0; p < n; ++p)
+  {
+    if (kinds[p] != PointKind::Fixed)
+    {
+      this->Unknown[p] = static_cast<int>(this->Unknowns.size());
+      this->Unknowns.push_back(p);
+    }
+  }
+  if (this->Unknowns.empty())
+  {
+    return "No point of the volume can move.";
+  }
+
+  // The proxy's pattern over the unknowns, and where each tetrahedron's entries go in it.
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(m) * 16);
+  for (int c = 0; c < m; ++c)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        const int ui = this->Unknown[tetrahedra(c, i)], uj = this->Unknown[tetrahedra(c, j)];
+        if (ui >= 0 && uj >= 0)
+        {
+          triplets.emplace_back(ui, uj, 1.0);
+        }
+      }
+    }
+  }
+  const int unknowns = static_cast<int>(this->Unknowns.size());
+  this->Proxy.resize(unknowns, unknowns);
+  this->Proxy.setFromTriplets(triplets.begin(), triplets.end());
+  this->Proxy.makeCompressed();
+  auto slot = [this](int row, int column) {
+    const int* begin = this->Proxy.innerIndexPtr() + this->Proxy.outerIndexPtr()[column];
+    const int* end = this->Proxy.innerIndexPtr() + this->Proxy.outerIndexPtr()[column + 1];
+    return static_cast<int>(std::lower_bound(begin, end, row) - this->Proxy.innerIndexPtr());
+  };
+  this->Slots.resize(m, 16);
+  this->Blocks.resize(m, 16);
+  Eigen::VectorXd stiffness = Eigen::VectorXd::Zero(n);
+  for (int c = 0; c < m; ++c)
+  {
+    // The Hessian of 4 V_c |J_c|^2, which bounds the symmetric Dirichlet energy's Hessian at
+    // rest (8 on symmetric strains, 0 on rotations) from above, per coordinate.
+    const Matrix3& B = this->RestInverse[c];
+    Eigen::Matrix<double, 4, 3> gradients; // of the barycentric coordinates
+    gradients.row(0) = -B.colwise().sum();
+    gradients.bottomRows<3>() = B;
+    const Eigen::Matrix4d block = 8.0 * this->Volume[c] * gradients * gradients.transpose();
+    for (int i = 0; i < 4; ++i)
+    {
+      stiffness[tetrahedra(c, i)] += block(i, i);
+      for (int j = 0; j < 4; ++j)
+      {
+        const int ui = this->Unknown[tetrahedra(c, i)], uj = this->Unknown[tetrahedra(c, j)];
+        this->Slots(c, 4 * i + j) = ui >= 0 && uj >= 0 ? slot(ui, uj) : -1;
+        this->Blocks(c, 4 * i + j) = block(i, j);
+      }
+    }
+  }
+  this->Pull = Eigen::VectorXd::Zero(n);
+  this->PullSlots.assign(unknowns, -1);
+  for (int p = 0; p < n; ++p)
+  {
+    if (kinds[p] == PointKind::Targeted)
+    {
+      this->Pull[p] = stiffness[p];
+      this->PullSlots[this->Unknown[p]] = slot(this->Unknown[p], this->Unknown[p]);
+    }
+  }
+  this->TetWeights.assign(m, 1.0);
+
+  this->TetOffsets.assign(n + 1, 0);
+  for (int c = 0; c < m; ++c)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      ++this->TetOffsets[tetrahedra(c, i) + 1];
+    }
+  }
+  for (int p = 0; p < n; ++p)
+  {
+    this->TetOffsets[p + 1] += this->TetOffsets[p];
+  }
+  this->PointTets.resize(this->TetOffsets[n]);
+  std::vector<int> fill(this->TetOffsets.begin(), this->TetOffsets.end() - 1);
+  for (int c = 0; c < m; ++c)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      this->PointTets[fill[tetrahedra(c, i)]++] = c;
+    }
+  }
+  this->Factor.SetManySolves(true);
+  this->FactoredWeight = 0.0;
+  return this->FactorAt(targetWeight);
+}
+
+std::string InjectiveDeformation::FactorAt(double weight)
+{
+  if (weight == this->FactoredWeight)
+  {
+    return {};
+  }
+  double* values = this->Proxy.valuePtr();
+  std::fill(values, values + this->Proxy.nonZeros(), 0.0);
+  for (Eigen::Index c = 0; c < this->Slots.rows(); ++c)
+  {
+    for (int k = 0; k < 16; ++k)
+    {
+      if (this->Slots(c, k) >= 0)
+      {
+        values[this->Slots(c, k)] += this->TetWeights[c] * this->Blocks(c, k);
+      }
+    }
+  }
+  for (std::size_t u = 0; u < this->Unknowns.size(); ++u)
+  {
+    if (this->PullSlots[u] >= 0)
+    {
+      values[this->PullSlots[u]] += 2.0 * weight * this->Pull[this->Unknowns[u]];
+    }
+  }
+  const std::string error = this->Factor.Factorize(this->Proxy, this->Backend);
+  this->FactoredWeight = error.empty() ? weight : 0.0;
+  return error;
+}
+
+void InjectiveDeformation::Reweight(const Positions& x, const ParallelFor& loop)
+{
+  const int m = static_cast<int>(this->Tets.rows());
+  loop(0, m, [&](int first, int last) {
+    for (int c = first; c < last; ++c)
+    {
+      const Matrix3 J = Edges(x, this->Tets, c) * this->RestInverse[c];
+      const double smallest =
+        std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Matrix3>()
+                                  .computeDirect(J.transpose() * J, Eigen::EigenvaluesOnly)
+                                  .eigenvalues()[0]));
+      // The energy's curvature along its most compressed direction, 2 + 6 / s^4, against the
+      // proxy's 8 at rest.
+      this->TetWeights[c] = std::min(1e12, (2.0 + 6.0 / std::pow(smallest, 4.0)) / 8.0);
+    }
+  });
+  this->FactoredWeight = 0.0;
+}
+
+double InjectiveDeformation::Energy(
+  const Positions& points, const Positions& targets, const ParallelFor& loop) const
+{
+  const Rows x = points;
+  const int m = static_cast<int>(this->Tets.rows());
+  std::vector<double> energies(m);
+  loop(0, m, [&](int first, int last) {
+    for (int c = first; c < last; ++c)
+    {
+      const Matrix3 edges = Edges(x, this->Tets, c);
+      if (!(edges.determinant() > 0.0))
+      {
+        energies[c] = Infinity;
+        continue;
+      }
+      const Matrix3 J = edges * this->RestInverse[c];
+      energies[c] = this->Volume[c] * (J.squaredNorm() + J.inverse().squaredNorm() - 6.0);
+    }
+  });
+  double energy = 0.0;
+  for (double e : energies)
+  {
+    energy += e;
+  }
+  return energy + this->Penalty(points, targets);
+}
+
+double InjectiveDeformation::Penalty(const Positions& x, const Positions& targets) const
+{
+  double penalty = 0.0;
+  for (int p : this->Unknowns)
+  {
+    if (this->Kinds[p] == PointKind::Targeted)
+    {
+      penalty += this->Lambda * this->Pull[p] * (x.row(p) - targets.row(p)).squaredNorm();
+    }
+  }
+  return penalty;
+}
+
+void InjectiveDeformation::Gradient(const Positions& points, const Positions& targets,
+  Eigen::MatrixXd& gradient, const ParallelFor& loop) const
+{
+  const Rows x = points;
+  const int m = static_cast<int>(this->Tets.rows());
+  Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor> local(m, 12);
+  loop(0, m, [&](int first, int last) {
+    for (int c = first; c < last; ++c)
+    {
+      const Matrix3& B = this->RestInverse[c];
+      const Matrix3 J = Edges(x, this->Tets, c) * B;
+      const Matrix3 inverseT = J.inverse().transpose();
+      const Matrix3 dJ = 2.0 * this->Volume[c] * (J - inverseT * inverseT.transpose() * inverseT);
+      const Matrix3 dEdges = dJ * B.transpose(); // column k: the gradient at corner k + 1
+      Eigen::Map<Eigen::Matrix<double, 3, 4>> corners(local.row(c).data());
+      corners.rightCols<3>() = dEdges;
+      corners.col(0) = -dEdges.rowwise().sum();
+    }
+  });
+  gradient.setZero(this->Unknowns.size(), 3);
+  for (int c = 0; c < m; ++c)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      const int u = this->Unknown[this->Tets(c, i)];
+      if (u >= 0)
+      {
+        gradient.row(u) += local.block<1, 3>(c, 3 * i);
+      }
+    }
+  }
+  for (std::size_t u = 0; u < this->Unknowns.size(); ++u)
+  {
+    const int p = this->Unknowns[u];
+    if (this->Kinds[p] == PointKind::Targeted)
+    {
+      gradient.row(u) += 2.0 * this->Lambda * this->Pull[p] * (points.row(p) - targets.row(p));
+    }
+  }
+}
+
+double InjectiveDeformation::LargestSafeStep(const Positions& points,
+  const Positions& directions, double below, const ParallelFor& loop) const
+{
+  const Rows x = points, direction = directions;
+  const int m = static_cast<int>(this->Tets.rows());
+  std::vector<double> steps(m);
+  loop(0, m, [&](int first, int last) {
+    for (int c = first; c < last; ++c)
+    {
+      const Matrix3 D = Edges(x, this->Tets, c);
+      const Matrix3 P = Edges(direction, this->Tets, c);
+      // det(D + t P), column by column.
+      const Vector3 d0 = D.col(0), d1 = D.col(1), d2 = D.col(2);
+      const Vector3 p0 = P.col(0), p1 = P.col(1), p2 = P.col(2);
+      const double a0 = d0.dot(d1.cross(d2));
+      const double a1 = p0.dot(d1.cross(d2)) + d0.dot(p1.cross(d2)) + d0.dot(d1.cross(p2));
+      const double a2 = d0.dot(p1.cross(p2)) + p0.dot(d1.cross(p2)) + p0.dot(p1.cross(d2));
+      const double a3 = p0.dot(p1.cross(p2));
+      steps[c] = SmallestPositiveRoot(a0, a1, a2, a3, below);
+    }
+  });
+  double smallest = Infinity;
+  for (double s : steps)
+  {
+    smallest = std::min(smallest, s);
+  }
+  return smallest;
+}
+
+bool InjectiveDeformation::AllPositive(const Positions& x, const std::vector<int>& tets) const
+{
+  return std::all_of(tets.begin(), tets.end(),
+    [&](int c) { return Edges(x, this->Tets, c).determinant() > 0.0; });
+}
+
+void InjectiveDeformation::Snap(const Positions& targets, Positions& x, double snap) const
+{
+  std::vector<int> around;
+  for (int p : this->Unknowns)
+  {
+    if (this->Kinds[p] != PointKind::Targeted)
+    {
+      continue;
+    }
+    const Eigen::RowVector3d before = x.row(p);
+    if ((before - targets.row(p)).norm() > snap)
+    {
+      continue;
+    }
+    x.row(p) = targets.row(p);
+    around.assign(this->PointTets.begin() + this->TetOffsets[p],
+      this->PointTets.begin() + this->TetOffsets[p + 1]);
+    if (!this->AllPositive(x, around))
+    {
+      x.row(p) = before;
+    }
+  }
+}
+
+InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions& points,
+  const InjectiveOptions& options, double snap, const ParallelFor& loop)
+{
+  InjectiveReport report;
+  const int n = static_cast<int>(this->Kinds.size());
+  this->Misses.assign(n, 0.0);
+  // Nothing asked of a mesh at rest: the rest, exactly (rounding would move it by 1e-16).
+  bool still = points == this->Rest;
+  for (int p : this->Unknowns)
+  {
+    still = still && (this->Kinds[p] != PointKind::Targeted || targets.row(p) == this->Rest.row(p));
+  }
+  Eigen::MatrixXd gradient;
+  double lastAlpha = 0.0;
+  Positions direction = Positions::Zero(n, 3);
+  Positions trial(n, 3);
+
+  // One proxy step from `from` (energy `fromEnergy`): the trial point and its energy; false if
+  // the energy does not fall enough along the step.
+  auto step = [&](const Positions& from, double fromEnergy, double& trialEnergy) {
+    this->Gradient(from, targets, gradient, loop);
+    const Eigen::MatrixXd solved = -this->Factor.Solve(gradient, loop);
+    for (std::size_t u = 0; u < this->Unknowns.size(); ++u)
+    {
+      direction.row(this->Unknowns[u]) = solved.row(u);
+    }
+    const double slope = (gradient.array() * solved.array()).sum();
+    trialEnergy = Infinity;
+    if (!(slope < 0.0))
+    {
+      return false;
+    }
+    double alpha = std::min(
+      1.0, SafeFraction * this->LargestSafeStep(from, direction, 1.0 / SafeFraction, loop));
+    lastAlpha = alpha;
+    for (int k = 0; k < MaximumHalvings; ++k, alpha *= 0.5)
+    {
+      trial = from + alpha * direction;
+      trialEnergy = this->Energy(trial, targets, loop);
+      if (trialEnergy <= fromEnergy + SufficientDecrease * alpha * slope)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+
+  // The targets' pull tightens stage by stage (a penalty continuation): a loose pull lets the
+  // whole zone turn and shear towards the targets before a stiff one puts the boundary on them,
+  // where a stiff pull from the start drags the boundary ahead of the interior and the steps
+  // stall at the first flattened cell.
+  std::vector<double> weights{ this->FinalWeight };
+  while (options.Continuation && weights.back() / ContinuationRatio >= FirstWeight)
+  {
+    weights.push_back(weights.back() / ContinuationRatio);
+  }
+  std::reverse(weights.begin(), weights.end());
+  double energy = still ? 0.0 : Infinity;
+  for (double weight : weights)
+  {
+    if (still || report.Iterations >= options.MaximumIterations)
+    {
+      break;
+    }
+    const std::string error = this->FactorAt(weight);
+    if (!error.empty())
+    {
+      break;
+    }
+    this->Lambda = weight;
+    energy = this->Energy(points, targets, loop);
+    Positions previous = points;
+    for (int stageIterations = 0;
+         std::isfinite(energy) && report.Iterations < options.MaximumIterations; ++stageIterations)
+    {
+      ++report.Iterations;
+      // AQP: the step starts from x + theta (x - x_before), theta short of any flat tetrahedron.
+      bool accepted = false;
+      double trialEnergy = Infinity;
+      if (options.Accelerate && stageIterations > 0)
+      {
+        const Positions momentum = points - previous;
+        const double theta = std::min(Momentum,
+          SafeFraction * this->LargestSafeStep(points, momentum, Momentum / SafeFraction, loop));
+        const Positions start = points + theta * momentum;
+        const double startEnergy = this->Energy(start, targets, loop);
+        accepted = std::isfinite(startEnergy) && step(start, startEnergy, trialEnergy) &&
+          trialEnergy < energy;
+      }
+      // Without momentum where it did not lower the energy: the energy never rises.
+      if (!accepted && !step(points, energy, trialEnergy))
+      {
+        break;
+      }
+      previous = points;
+      points = trial;
+      if (lastAlpha < StallStep)
+      {
+        // A cell about to flatten stopped the step: the proxy stiffens the cells as the
+        // energy's curvature has, and is factored again.
+        this->Reweight(points, loop);
+        if (!this->FactorAt(weight).empty())
+        {
+          break;
+        }
+        previous = points;
+      }
+      const double decrease = energy - trialEnergy;
+      energy = trialEnergy;
+      const double tolerance = weight < this->FinalWeight ? StageTolerance : options.Tolerance;
+      if (decrease <= tolerance * energy)
+      {
+        break;
+      }
+    }
+  }
+  // The distortion before the snap, which moves targeted points by less than `snap`.
+  const double penalty = this->Penalty(points, targets);
+  if (snap > 0.0)
+  {
+    this->Snap(targets, points, snap);
+  }
+  for (int p : this->Unknowns)
+  {
+    if (this->Kinds[p] == PointKind::Targeted)
+    {
+      this->Misses[p] = (points.row(p) - targets.row(p)).norm();
+      report.LargestMiss = std::max(report.LargestMiss, this->Misses[p]);
+    }
+  }
+  if (!std::isfinite(energy))
+  {
+    // A start with inverted tetrahedra was not moved.
+    for (int c = 0; c < this->Tets.rows(); ++c)
+    {
+      report.Inverted += !(Edges(points, this->Tets, c).determinant() > 0.0);
+    }
+  }
+  report.Distortion = report.Inverted > 0 ? Infinity : (energy - penalty) / this->TotalVolume;
+  return report;
+}
+}

@@ -1,0 +1,20 @@
+// SMPFor: the core's loops (ParallelFor) on VTK's SMP backend.
+#ifndef LaplacianEditing_Pipeline_SMPFor_h
+#define LaplacianEditing_Pipeline_SMPFor_h
+
+#include "ParallelFor.h"
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+/// Runs on vtkSMPTools. ParaView's VTK runs that on one thread unless told otherwise
+/// (VTK_SMP_BACKEND_IN_USE): there the loops take VTK's thread pool, which halves an ARAP drag's
+/// frame on two cores.
+VTKLAPLACIANEDITINGFILTERS_EXPORT void SMPFor(
+  int begin, int end, const std::function<void(int first, int last)>& body);
+}
+}
+
+#endif

@@ -1,0 +1,288 @@
+#include "VolumeFollower.h"
+
+#include "OutputWriter.h"
+#include "SMPFor.h"
+#include "Stopwatch.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+namespace
+{
+// A target within this fraction of the zone's mean edge of its point is met (and put on it).
+constexpr double MetFraction = 1e-3;
+// How much stiffer than the mesh around it a target's pull is.
+constexpr double TargetWeight = 1e4;
+// Moves this small, in diagonals, are rounding.
+constexpr double StillDistance = 1e-12;
+
+Vector3 Point(vtkPoints* points, vtkIdType id)
+{
+  Vector3 p;
+  points->GetPoint(id, p.data());
+  return p;
+}
+}
+
+void VolumeFollower::SetFilter(vtkAlgorithm* filter)
+{
+  const OutputArray::Holders holders = [filter](vtkObjectBase* object, vtkObjectBase* ownPoints) {
+    return OutputWriter::CountDownstreamReferences(filter, object, ownPoints);
+  };
+  for (OutputArray* array : { &this->Points, &this->Quality, &this->Failures })
+  {
+    array->SetPipelineHolders(holders);
+  }
+}
+
+std::string VolumeFollower::Update(vtkUnstructuredGrid* input, vtkPoints* rest)
+{
+  bool rebuilt = false;
+  const std::string error = this->Mesh.Update(input, rebuilt);
+  if (!error.empty())
+  {
+    this->Rest = nullptr;
+    return error;
+  }
+  if (!rebuilt && rest == this->Rest && rest->GetMTime() == this->RestTime)
+  {
+    return {};
+  }
+  // A new mesh or new rest points (a commit): the zone and the rest arrays anew.
+  this->Rest = rest;
+  this->RestTime = rest->GetMTime();
+  this->Zone = VolumeMesh::Zone();
+  this->Region = 0;
+  this->Followed = false;
+  this->LocalOf.assign(input->GetNumberOfPoints(), -1);
+  const vtkIdType cells = input->GetNumberOfCells();
+  this->NoFailures = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  this->NoFailures->SetName("EditFailed");
+  this->NoFailures->SetNumberOfValues(cells);
+  this->NoFailures->FillValue(0);
+  this->RestQuality = vtkSmartPointer<vtkFloatArray>::New();
+  this->RestQuality->SetName("ScaledJacobian");
+  this->RestQuality->SetNumberOfValues(cells);
+  auto position = [rest](vtkIdType id) { return Point(rest, id); };
+  for (vtkIdType cell = 0; cell < cells; ++cell)
+  {
+    this->RestQuality->SetValue(cell, static_cast<float>(this->Mesh.Quality(cell, position)));
+  }
+  return {};
+}
+
+void VolumeFollower::Reset()
+{
+  this->Followed = false;
+  this->LastFacts = Facts();
+}
+
+std::string VolumeFollower::SelectZone(const std::vector<vtkIdType>& moved, const Settings& settings)
+{
+  const Stopwatch watch;
+  for (vtkIdType id : this->Zone.Points)
+  {
+    this->LocalOf[id] = -1;
+  }
+  vtkPoints* rest = this->Rest;
+  this->Mesh.SelectZone(moved, this->Reach, rest, this->Zone);
+  const int n = static_cast<int>(this->Zone.Points.size());
+  // Coordinates about the zone's centre keep their precision on offset models.
+  this->Center = Vector3::Zero();
+  for (vtkIdType id : this->Zone.Points)
+  {
+    this->Center += Point(rest, id) / n;
+  }
+  Positions local(n, 3);
+  for (int row = 0; row < n; ++row)
+  {
+    local.row(row) = (Point(rest, this->Zone.Points[row]) - this->Center).transpose();
+  }
+  double edges = 0.0;
+  for (Eigen::Index t = 0; t < this->Zone.Tets.rows(); ++t)
+  {
+    edges += (local.row(this->Zone.Tets(t, 1)) - local.row(this->Zone.Tets(t, 0))).norm();
+  }
+  this->Snap = MetFraction * edges / std::max<Eigen::Index>(1, this->Zone.Tets.rows());
+  const std::string error =
+    this->Solver.Prepare(local, this->Zone.Tets, this->Zone.Kinds, TargetWeight, settings.Backend);
+  this->Movable.clear();
+  for (int row = 0; row < n; ++row)
+  {
+    this->LocalOf[this->Zone.Points[row]] = row;
+    if (this->Zone.Kinds[row] != PointKind::Fixed)
+    {
+      this->Movable.push_back(this->Zone.Points[row]);
+    }
+  }
+  std::sort(this->Movable.begin(), this->Movable.end());
+  this->Solution = local; // the zone starts at rest
+  this->LastFacts.SetupTime += watch.Seconds();
+  return error;
+}
+
+std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoints* edited,
+  std::uint64_t region, const Settings& settings)
+{
+  this->LastFacts = Facts();
+  vtkPoints* rest = this->Rest;
+  // An edit that moved nothing beyond rounding (the surface editor solves a handle at rest to
+  // within 1e-15): the rest, exactly.
+  const bool still = std::all_of(moved.begin(), moved.end(), [&](vtkIdType id) {
+    return (Point(edited, id) - Point(rest, id)).norm() <= StillDistance * this->Mesh.GetBoundary()->GetLength();
+  });
+  if (still)
+  {
+    this->Reset();
+    return {};
+  }
+  if (region != this->Region || this->Zone.Points.empty())
+  {
+    // The reach: the region's radius about its centroid, at rest.
+    Vector3 centroid = Vector3::Zero();
+    for (vtkIdType id : moved)
+    {
+      centroid += Point(rest, id) / static_cast<double>(moved.size());
+    }
+    this->Reach = 0.0;
+    for (vtkIdType id : moved)
+    {
+      this->Reach = std::max(this->Reach, (Point(rest, id) - centroid).norm());
+    }
+    std::string error = this->SelectZone(moved, settings);
+    if (!error.empty())
+    {
+      return error;
+    }
+    this->Region = region;
+  }
+  InjectiveOptions options;
+  options.MaximumIterations = settings.Dragging ? settings.DragIterations : settings.Iterations;
+  options.Continuation = !settings.Dragging; // a drag step starts near its targets
+  const Stopwatch watch;
+  for (;;)
+  {
+    const int n = static_cast<int>(this->Zone.Points.size());
+    Positions targets = Positions::Zero(n, 3);
+    this->Edited.setZero(n, 3);
+    for (int row = 0; row < n; ++row)
+    {
+      if (this->Zone.Kinds[row] == PointKind::Targeted)
+      {
+        this->Edited.row(row) = Point(edited, this->Zone.Points[row]).transpose();
+        targets.row(row) = this->Edited.row(row) - this->Center.transpose();
+      }
+    }
+    const InjectiveReport report =
+      this->Solver.Solve(targets, this->Solution, options, this->Snap, SMPFor);
+    this->LastFacts.Iterations += report.Iterations;
+    this->LastFacts.LargestMiss = report.LargestMiss;
+    this->LastFacts.Distortion = report.Distortion;
+    if (report.LargestMiss <= this->Snap || settings.Dragging || this->Zone.Complete)
+    {
+      break;
+    }
+    // A target missed: the zone may be too tight to let it through.
+    const Positions solved = this->Solution;
+    const std::vector<vtkIdType> points = this->Zone.Points;
+    const Vector3 center = this->Center;
+    this->Reach *= 2.0;
+    ++this->LastFacts.Growths;
+    std::string error = this->SelectZone(moved, settings);
+    if (!error.empty())
+    {
+      return error;
+    }
+    for (std::size_t row = 0; row < points.size(); ++row)
+    {
+      this->Solution.row(this->LocalOf[points[row]]) =
+        solved.row(static_cast<Eigen::Index>(row)) + (center - this->Center).transpose();
+    }
+  }
+  this->LastFacts.SolveTime = watch.Seconds();
+  this->LastFacts.ZonePoints = static_cast<int>(this->Zone.Points.size());
+  this->LastFacts.ZoneTetrahedra = static_cast<int>(this->Zone.Tets.rows());
+  // The cells around a point left short of its target.
+  this->LastEdited = edited;
+  this->LastEditedTime = edited->GetMTime();
+  this->FailedCells.clear();
+  const std::vector<double>& misses = this->Solver.GetMisses();
+  for (vtkIdType cell : this->Zone.Cells)
+  {
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    this->Mesh.GetGrid()->GetCellPoints(cell, count, ids);
+    if (std::any_of(ids, ids + count, [&](vtkIdType id) {
+          const int row = this->LocalOf[id];
+          return row >= 0 && misses[row] > this->Snap;
+        }))
+    {
+      this->FailedCells.push_back(cell);
+    }
+  }
+  this->LastFacts.FailedCells = static_cast<int>(this->FailedCells.size());
+  this->Followed = true;
+  return {};
+}
+
+Vector3 VolumeFollower::Position(vtkIdType id) const
+{
+  const int row = this->LocalOf[id];
+  if (row < 0)
+  {
+    return Point(this->Rest, id);
+  }
+  // A target met is the boundary's edit exactly (the zone's frame would round it).
+  const bool met = this->Zone.Kinds[row] == PointKind::Targeted && this->Solver.GetMisses()[row] == 0.0;
+  return met ? Vector3(this->Edited.row(row).transpose())
+             : Vector3(this->Solution.row(row).transpose() + this->Center);
+}
+
+void VolumeFollower::Write(vtkUnstructuredGrid* output)
+{
+  const std::uint64_t key = ++this->Writes;
+  static const std::vector<vtkIdType> none;
+  const std::vector<vtkIdType>& moved = this->Followed ? this->Movable : none;
+  const std::vector<vtkIdType>& cells = this->Followed ? this->Zone.Cells : none;
+  output->SetPoints(this->Points.Update(this->Rest, moved, key, [&](vtkDataArray* points) {
+    for (vtkIdType id : moved)
+    {
+      points->SetTuple(id, this->Position(id).data());
+    }
+  }));
+  vtkDataArray* quality =
+    this->Quality.Update(this->RestQuality, cells, key, [&](vtkDataArray* array) {
+      auto position = [this](vtkIdType id) { return this->Position(id); };
+      for (vtkIdType cell : cells)
+      {
+        array->SetComponent(cell, 0, this->Mesh.Quality(cell, position));
+      }
+    });
+  vtkDataArray* failures =
+    this->Failures.Update(this->NoFailures, cells, key, [&](vtkDataArray* array) {
+      for (vtkIdType cell : cells)
+      {
+        array->SetComponent(cell, 0, 0.0);
+      }
+      for (vtkIdType cell : this->FailedCells)
+      {
+        array->SetComponent(cell, 0, 1.0);
+      }
+    });
+  output->GetCellData()->AddArray(quality);
+  output->GetCellData()->AddArray(failures);
+}
+}
+}

@@ -1,0 +1,127 @@
+// VolumeFollower: a volume mesh's interior moved after an edit of its boundary surface, without
+// inverting a cell, and written into the filter's output in place.
+//
+// The edit moved some boundary points (the surface editor's region). The follower takes the
+// zone of the volume near them (VolumeMesh::SelectZone, within the region's radius of its
+// points), factors its proxy once per region (InjectiveDeformation), and moves the zone's
+// interior, the region's points pulled to their edited positions. A drag step iterates a few
+// times from the last step's result; a settled update iterates to convergence, and where a
+// target is missed, grows the zone (twice the reach) until it is met or the zone holds
+// everything it can. A target no valid mesh can reach is left short: the cells around it are
+// marked in EditFailed. Points outside the zone keep their rest coordinates exactly.
+//
+// Output: the rest grid with the zone's points moved, ScaledJacobian (VolumeMesh::Quality) and
+// EditFailed (1 on a cell with a point that missed its target) cell arrays, each written in
+// place between updates (OutputArray), so a move costs what its zone costs.
+#ifndef LaplacianEditing_Pipeline_VolumeFollower_h
+#define LaplacianEditing_Pipeline_VolumeFollower_h
+
+#include "InjectiveDeformation.h"
+#include "OutputArray.h"
+#include "VolumeMesh.h"
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+
+#include "vtkPoints.h" // for Follows
+#include "vtkSmartPointer.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkFloatArray;
+class vtkUnsignedCharArray;
+class vtkUnstructuredGrid;
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+class VTKLAPLACIANEDITINGFILTERS_EXPORT VolumeFollower
+{
+public:
+  struct Settings
+  {
+    /// Iterations at most of a settled update, and of a drag step.
+    int Iterations = 300;
+    int DragIterations = 8;
+    bool Dragging = false;
+    SolverBackend Backend = SolverBackend::Cholmod;
+  };
+
+  /// What the last Follow did.
+  struct Facts
+  {
+    int ZonePoints = 0;
+    int ZoneTetrahedra = 0;
+    int Iterations = 0;
+    /// Times the zone grew to meet its targets.
+    int Growths = 0;
+    int FailedCells = 0;
+    double LargestMiss = 0.0;
+    /// Mean symmetric Dirichlet energy over the zone's rest volume (0: rigid).
+    double Distortion = 0.0;
+    double SetupTime = 0.0;
+    double SolveTime = 0.0;
+  };
+
+  /// The filter whose output is written (see OutputArray::SetPipelineHolders).
+  void SetFilter(vtkAlgorithm* filter);
+
+  /// Brings the mesh up to date with `input` (VolumeMesh::Update), the edits starting from the
+  /// points `rest` (the input's, or committed ones). Returns an error, empty on success.
+  std::string Update(vtkUnstructuredGrid* input, vtkPoints* rest);
+  const VolumeMesh& GetMesh() const { return this->Mesh; }
+  VolumeMesh& GetMesh() { return this->Mesh; }
+
+  /// Follows the edit that moved the boundary points `moved` (grid ids) to their coordinates in
+  /// `edited`; `region` changes whenever `moved` does. Returns an error, empty on success.
+  std::string Follow(const std::vector<vtkIdType>& moved, vtkPoints* edited, std::uint64_t region,
+    const Settings& settings);
+  /// Nothing moved: the next Write writes the rest.
+  void Reset();
+  /// Whether the last Follow followed `edited` as it is now.
+  bool Follows(vtkPoints* edited) const
+  {
+    return this->Followed && edited == this->LastEdited && edited->GetMTime() == this->LastEditedTime;
+  }
+
+  /// Writes the last Follow into `output`, a shallow copy of the input.
+  void Write(vtkUnstructuredGrid* output);
+
+  /// The zone's points in grid ids, and their positions after the last Follow.
+  const VolumeMesh::Zone& GetZone() const { return this->Zone; }
+  const Facts& GetFacts() const { return this->LastFacts; }
+
+private:
+  std::string SelectZone(const std::vector<vtkIdType>& moved, const Settings& settings);
+  Vector3 Position(vtkIdType id) const;
+
+  VolumeMesh Mesh;
+  const vtkPoints* LastEdited = nullptr; // compared, never dereferenced
+  vtkMTimeType LastEditedTime = 0;
+  vtkSmartPointer<vtkPoints> Rest;
+  vtkMTimeType RestTime = 0;
+  vtkSmartPointer<vtkFloatArray> RestQuality;
+  VolumeMesh::Zone Zone;
+  InjectiveDeformation Solver;
+  Positions Solution; // zone rows, relative to Center
+  Positions Edited;   // the targeted rows' edited positions, in the grid's frame
+  Vector3 Center = Vector3::Zero();
+  std::vector<int> LocalOf; // grid id -> zone row, -1 outside
+  double Reach = 0.0;
+  double Snap = 0.0;
+  std::uint64_t Region = 0;
+  bool Followed = false;
+  std::vector<vtkIdType> Movable, FailedCells;
+  std::uint64_t Writes = 0;
+  OutputArray Points;
+  OutputArray Quality;
+  OutputArray Failures;
+  vtkSmartPointer<vtkUnsignedCharArray> NoFailures;
+  Facts LastFacts;
+};
+}
+}
+
+#endif

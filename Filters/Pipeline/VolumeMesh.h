@@ -1,0 +1,105 @@
+// VolumeMesh: the numerical core's view of a vtkUnstructuredGrid of linear 3D cells.
+//
+// Each cell becomes corner tetrahedra (InjectiveDeformation): a tetrahedron is its own; a
+// hexahedron, voxel or wedge has one at each corner, formed by the corner and its three edge
+// neighbours; a pyramid one at each base corner. A cell is valid where all its corner
+// tetrahedra have the orientation that the mesh's cells of its type have (so a mesh written with
+// the opposite convention, as some generators do, is taken as it is), and the corner
+// tetrahedra are stored positively oriented.
+//
+// The boundary surface (the faces that one cell has) is a vtkPolyData of triangles (quadrilateral
+// faces split) on all the grid's points, with the grid's point data: its point ids are the
+// grid's, so the surface editor's regions, handles and selections name grid points. Its faces
+// face outwards.
+//
+// The zone of an edit: the grid points within a distance, along the mesh's edges, of the boundary
+// points the edit moves. Its interior points are free, its other boundary points fixed; the
+// corner tetrahedra that touch a point of the zone make the core's problem. Building costs one
+// pass over the grid per content change; a zone costs what its cells cost.
+#ifndef LaplacianEditing_Pipeline_VolumeMesh_h
+#define LaplacianEditing_Pipeline_VolumeMesh_h
+
+#include "InjectiveDeformation.h"
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkPoints;
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+class VTKLAPLACIANEDITINGFILTERS_EXPORT VolumeMesh
+{
+public:
+  /// What every volume editor requires of its input: points, at least one 3D cell, linear cells
+  /// only. Returns an error message, empty on success.
+  static std::string CheckGrid(vtkUnstructuredGrid* grid);
+
+  /// Builds from `grid` at its points, unless built from the same content (ContentTime);
+  /// `rebuilt` says whether it built. Errors: cells flat or inverted at rest, a face of more
+  /// than two cells, a boundary edge not on exactly two boundary faces.
+  std::string Update(vtkUnstructuredGrid* grid, bool& rebuilt);
+
+  /// The boundary surface (see the class description); null before a build.
+  vtkPolyData* GetBoundary() const { return this->Boundary; }
+
+  /// Puts a copy of the grid's point array `labels` among the boundary's point data, in place of
+  /// the grid's, with the interior points' labels 0: a selection labels grid points, and the
+  /// surface editor selects on the boundary. Copied again only when `labels` changes.
+  void SetBoundaryLabels(vtkDataArray* labels);
+  bool IsOnBoundary(vtkIdType point) const { return this->OnBoundary[point] != 0; }
+
+  struct Zone
+  {
+    std::vector<vtkIdType> Points; // grid id of each zone point
+    std::vector<PointKind> Kinds;
+    Tetrahedra Tets;               // in zone point indices
+    std::vector<vtkIdType> Cells;  // the grid cells whose corner tetrahedra these are
+    /// Whether the zone holds every point the seeds connect to: it cannot grow.
+    bool Complete = false;
+  };
+
+  /// The zone of the boundary points `targeted` (they become Targeted): the grid points within
+  /// `reach` of them along the mesh's edges, with the points at `positions`.
+  void SelectZone(const std::vector<vtkIdType>& targeted, double reach, vtkPoints* positions,
+    Zone& zone) const;
+
+  /// The scaled Jacobian of cell `cell` with its points at `position(id)`: Verdict's for a
+  /// tetrahedron (1 regular), the smallest corner's otherwise (1 for a cube's); negative where
+  /// inverted, NaN for a cell that is not 3D.
+  double Quality(vtkIdType cell, const std::function<Vector3(vtkIdType)>& position) const;
+
+  /// The grid of the last build.
+  vtkUnstructuredGrid* GetGrid() const { return this->Grid; }
+
+private:
+  std::string Build(vtkUnstructuredGrid* grid);
+  std::string BuildCorners();
+  std::string BuildBoundary();
+
+  vtkSmartPointer<vtkUnstructuredGrid> Grid;
+  vtkMTimeType BuiltTime = 0;
+  Tetrahedra Corners; // grid point ids, positive at rest
+  std::vector<vtkIdType> CornerCell;
+  std::vector<int> CellCorners;                      // offsets: a cell's corners are consecutive
+  std::vector<int> PointCornerOffsets, PointCorners; // the corners around each point
+  std::vector<char> OnBoundary;
+  vtkSmartPointer<vtkPolyData> Boundary;
+  vtkSmartPointer<vtkDataArray> Labels;
+  const vtkDataArray* LabelsSource = nullptr; // compared, never dereferenced
+  vtkMTimeType LabelsTime = 0;
+};
+}
+}
+
+#endif

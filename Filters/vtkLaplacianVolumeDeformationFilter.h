@@ -1,0 +1,179 @@
+/**
+ * @class   vtkLaplacianVolumeDeformationFilter
+ * @brief   edit a volume mesh through its boundary surface; the interior follows, no cell inverts
+ *
+ * The input is a vtkUnstructuredGrid of linear 3D cells (tetrahedra, hexahedra, voxels, wedges,
+ * pyramids, mixed; 0D to 2D cells may come along and move with their points). The edit is a
+ * vtkLaplacianDeformationFilter edit of the grid's boundary surface (GetSurfaceFilter()): the
+ * handle, the region and every mode and solver property are that filter's, with the same names
+ * and meanings, and the boundary's point ids are the grid's. The commonly set ones are forwarded
+ * here. The interior near the edited region then follows, without inverting a cell: it minimizes
+ * a distortion energy that no inverted or flat cell can have, each step stopped short of the
+ * first cell that would flatten (Documentation/volumes.md says why this method). Points farther
+ * than the region's radius from the region keep their coordinates exactly.
+ *
+ * Output: the input with its points moved, every point and cell array passed through, and two
+ * cell arrays: ScaledJacobian (1 for an ideal cell, 0 flat, negative inverted; a tetrahedron's as
+ * Verdict defines it, the smallest corner's for other cells; NaN for cells that are not 3D) and
+ * EditFailed (1 on a cell with a boundary point that could not reach its edited position without
+ * inverting a cell; the filter then warns). On bad input (no 3D cells, non-linear cells, cells
+ * flat or inverted at rest, a non-manifold boundary, a failed surface edit) the filter reports an
+ * error and passes the input through.
+ *
+ * Interaction: the handle widget pairs with GetSurfaceFilter(). While Dragging is on, each update
+ * runs DragVolumeIterations from the last result on the factors of the region; the update after
+ * the drag iterates to convergence (at most VolumeIterations).
+ *
+ * @sa vtkLaplacianDeformationFilter vtkDeformationHandleWidget
+ */
+#ifndef vtkLaplacianVolumeDeformationFilter_h
+#define vtkLaplacianVolumeDeformationFilter_h
+
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkAlgorithmOutput;
+class vtkLaplacianDeformationFilter;
+class vtkLinearTransform;
+class vtkSelection;
+
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianVolumeDeformationFilter
+  : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkLaplacianVolumeDeformationFilter* New();
+  vtkTypeMacro(vtkLaplacianVolumeDeformationFilter, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The editor of the boundary surface, whose properties choose and move the handle and the
+   * region; pair handle widgets with it. Its input is the filter's business.
+   */
+  vtkLaplacianDeformationFilter* GetSurfaceFilter();
+
+  /**
+   * @name Handle and region
+   * The surface filter's properties of the same names (vtkLaplacianDeformationFilter).
+   */
+  ///@{
+  void SetHandleCenter(double x, double y, double z);
+  void SetHandleCenter(const double center[3]);
+  double* GetHandleCenter() VTK_SIZEHINT(3);
+  void SetHandleTranslation(double x, double y, double z);
+  void SetHandleTranslation(const double translation[3]);
+  double* GetHandleTranslation() VTK_SIZEHINT(3);
+  void SetHandleRotation(double x, double y, double z);
+  void SetHandleRotation(const double rotation[3]);
+  double* GetHandleRotation() VTK_SIZEHINT(3);
+  void SetHandleTransform(vtkLinearTransform* transform) { this->SetHandleTransform(0, transform); }
+  void SetHandleTransform(int group, vtkLinearTransform* transform);
+  vtkLinearTransform* GetHandleTransform(int group = 0);
+  void SetHandleGroupMotion(vtkIdType group, double translationX, double translationY,
+    double translationZ, double rotationX, double rotationY, double rotationZ);
+  void SetHandleRadius(double radius);
+  double GetHandleRadius();
+  void SetROIRadius(double radius);
+  double GetROIRadius();
+  void SetRadiusUnits(int units);
+  int GetRadiusUnits();
+  void SetRadiusUnitsToAbsolute();
+  void SetRadiusUnitsToDiagonalFraction();
+  void SetSelectionMode(int mode);
+  int GetSelectionMode();
+  void SetSelectionModeToGeodesic();
+  void SetSelectionModeToArray();
+  /**
+   * A vtkSelection of the handle's points (grid point ids) on input port 1, as the surface
+   * filter's. The array of SelectionModeToArray is the one named with SetInputArrayToProcess on
+   * this filter.
+   */
+  void SetSelectionConnection(vtkAlgorithmOutput* selection) { this->SetInputConnection(1, selection); }
+  void SetSelectionData(vtkSelection* selection);
+  void SetRotationMode(int mode);
+  int GetRotationMode();
+  void SetRotationModeToNone();
+  void SetRotationModeToAsRigidAsPossible();
+  ///@}
+
+  /**
+   * @name Interaction and commits
+   */
+  ///@{
+  /**
+   * A drag is in progress: the surface filter's Dragging, and the interior runs
+   * DragVolumeIterations an update.
+   */
+  void SetDragging(vtkTypeBool dragging);
+  vtkTypeBool GetDragging();
+  vtkBooleanMacro(Dragging, vtkTypeBool);
+  /**
+   * Make the current result the rest shape of the next edit, the whole volume's (the surface
+   * filter's CommitEdit; committing through the surface filter, as a widget does, commits the
+   * volume too).
+   */
+  void CommitEdit();
+  /** Go back one commit (the surface filter's too); false if there is none. */
+  bool UndoCommit();
+  int GetNumberOfCommits();
+  ///@}
+
+  /**
+   * @name Interior
+   */
+  ///@{
+  /** Iterations at most of an update that is not a drag step. Default 300. */
+  vtkSetClampMacro(VolumeIterations, int, 1, 100000);
+  vtkGetMacro(VolumeIterations, int);
+  /** Iterations of an update while Dragging. Default 8. */
+  vtkSetClampMacro(DragVolumeIterations, int, 1, 100000);
+  vtkGetMacro(DragVolumeIterations, int);
+  ///@}
+
+  /**
+   * @name Results of the last update
+   */
+  ///@{
+  /** Points and corner tetrahedra of the zone the interior moved in. */
+  int GetNumberOfZonePoints();
+  int GetNumberOfZoneTetrahedra();
+  /** Iterations the interior took, and how often the zone grew to meet its targets. */
+  int GetNumberOfVolumeIterations();
+  int GetNumberOfZoneGrowths();
+  /** Cells marked in EditFailed. */
+  int GetNumberOfFailedCells();
+  /** The largest distance of a boundary point from its edited position. */
+  double GetLargestTargetMiss();
+  /** Seconds: choosing the zone and factoring, and iterating. */
+  double GetVolumeSetupTime();
+  double GetVolumeSolveTime();
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLaplacianVolumeDeformationFilter();
+  ~vtkLaplacianVolumeDeformationFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int VolumeIterations = 300;
+  int DragVolumeIterations = 8;
+
+private:
+  vtkLaplacianVolumeDeformationFilter(const vtkLaplacianVolumeDeformationFilter&) = delete;
+  void operator=(const vtkLaplacianVolumeDeformationFilter&) = delete;
+
+  // Runs the boundary's edit and the interior's; false, with the error reported, if either fails.
+  bool Edit(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output);
+  // The surface filter's commits, taken by the volume.
+  void SurfaceCommitted();
+  void SurfaceCommitUndone();
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

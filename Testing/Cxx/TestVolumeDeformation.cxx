@@ -1,0 +1,505 @@
+// vtkLaplacianVolumeDeformationFilter: the volume follows its boundary's edit without inverting a
+// cell. Inverted cells are counted by VTK's vtkMeshQuality (Verdict), not by the filter's own
+// measure. The tetrahedral meshes are tetgen's, made by the Volume.TetgenMeshes fixture.
+#include "FilterTestHelpers.h"
+#include "VolumeMeshes.h"
+
+#include "vtkLaplacianVolumeDeformationFilter.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace
+{
+using Filter = vtkLaplacianVolumeDeformationFilter;
+using FilterTestHelpers::ErrorCatcher;
+
+const std::string TemporaryDir = LAPLACIAN_EDITING_TEMPORARY_DIR;
+
+// A beam 8 long, 1 by 1 across, of 40 x 5 x 5 hexahedra, with a point and a cell array.
+vtkSmartPointer<vtkUnstructuredGrid> Beam()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = VolumeMeshes::HexBeam(40, 5, 5, 8.0);
+  vtkNew<vtkDoubleArray> temperature;
+  temperature->SetName("Temperature");
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    temperature->InsertNextValue(beam->GetPoint(i)[0]);
+  }
+  beam->GetPointData()->AddArray(temperature);
+  vtkNew<vtkIntArray> material;
+  material->SetName("Material");
+  for (vtkIdType i = 0; i < beam->GetNumberOfCells(); ++i)
+  {
+    material->InsertNextValue(static_cast<int>(i % 3));
+  }
+  beam->GetCellData()->AddArray(material);
+  return beam;
+}
+
+// An edit of the beam's end x = 8: handle radius 0.3, region 3.
+vtkSmartPointer<Filter> BeamEdit(vtkUnstructuredGrid* beam)
+{
+  auto filter = vtkSmartPointer<Filter>::New();
+  filter->SetInputData(beam);
+  filter->SetHandleCenter(8.0, 0.5, 0.5);
+  filter->SetHandleRadius(0.3);
+  filter->SetROIRadius(3.0);
+  filter->SetRotationModeToAsRigidAsPossible();
+  return filter;
+}
+
+// The transform that turns by `degrees` about the y axis through `center`, then moves by `lift`.
+vtkSmartPointer<vtkTransform> Turn(const double center[3], double degrees, const double lift[3])
+{
+  auto transform = vtkSmartPointer<vtkTransform>::New();
+  transform->PostMultiply();
+  transform->Translate(-center[0], -center[1], -center[2]);
+  transform->RotateY(degrees);
+  transform->Translate(center);
+  transform->Translate(lift);
+  return transform;
+}
+
+bool SamePoint(vtkPoints* a, vtkPoints* b, vtkIdType id)
+{
+  double p[3], q[3];
+  a->GetPoint(id, p);
+  b->GetPoint(id, q);
+  return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+}
+
+double Distance(const double a[3], const double b[3])
+{
+  return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+}
+
+// Every point farther than `radius` from `center` keeps its coordinates exactly; returns how
+// many points that covers.
+vtkIdType ExpectFarPointsUntouched(
+  vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, const double center[3], double radius)
+{
+  vtkIdType far = 0;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    if (Distance(input->GetPoint(i), center) > radius)
+    {
+      ++far;
+      EXPECT_TRUE(SamePoint(input->GetPoints(), output->GetPoints(), i)) << "point " << i;
+    }
+  }
+  return far;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> TetgenMesh(const std::string& name)
+{
+  std::string error;
+  vtkSmartPointer<vtkUnstructuredGrid> grid = VolumeMeshes::Tetrahedralize(
+    FilterTestHelpers::DataDir + "/" + name + ".obj", TemporaryDir, name, "pq1.4a0.0005", error);
+  EXPECT_TRUE(grid) << error;
+  return grid;
+}
+}
+
+TEST(VolumeDeformation, NothingMovedGivesTheInputBack)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  filter->Update();
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  ASSERT_EQ(output->GetNumberOfPoints(), beam->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    ASSERT_TRUE(SamePoint(beam->GetPoints(), output->GetPoints(), i)) << "point " << i;
+  }
+  // A cube's corners are right angles: every scaled Jacobian is 1.
+  vtkDataArray* quality = output->GetCellData()->GetArray("ScaledJacobian");
+  ASSERT_NE(quality, nullptr);
+  EXPECT_NEAR(quality->GetRange()[0], 1.0, 1e-6);
+  EXPECT_EQ(output->GetCellData()->GetArray("EditFailed")->GetRange()[1], 0.0);
+}
+
+TEST(VolumeDeformation, PassesPointCellAndFieldDataThrough)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkNew<vtkIntArray> note;
+  note->SetName("Note");
+  note->InsertNextValue(7);
+  beam->GetFieldData()->AddArray(note);
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  const double lift[3] = { 0.0, 0.0, 1.0 };
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), 30.0, lift));
+  filter->Update();
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  EXPECT_EQ(output->GetPointData()->GetArray("Temperature"), beam->GetPointData()->GetArray("Temperature"));
+  EXPECT_EQ(output->GetCellData()->GetArray("Material"), beam->GetCellData()->GetArray("Material"));
+  EXPECT_EQ(output->GetFieldData()->GetArray("Note"), note.Get());
+  EXPECT_EQ(output->GetNumberOfCells(), beam->GetNumberOfCells());
+  EXPECT_GT(filter->GetNumberOfZonePoints(), 0);
+}
+
+TEST(VolumeDeformation, RigidMotionOfTheWholeRegionIsReproduced)
+{
+  // The whole boundary in the region, both ends handles turned by one rotation: the volume,
+  // interior included, turns rigidly.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Selection");
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    const double x = beam->GetPoint(i)[0];
+    labels->InsertNextValue(x < 1.0 ? 2 : (x > 7.0 ? 3 : 1));
+  }
+  beam->GetPointData()->AddArray(labels);
+  vtkNew<Filter> filter;
+  filter->SetInputData(beam);
+  filter->SetSelectionModeToArray();
+  filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Selection");
+  filter->SetRotationModeToAsRigidAsPossible();
+  const double center[3] = { 4.0, 0.5, 0.5 }, lift[3] = { 0.5, 1.0, 0.0 };
+  vtkSmartPointer<vtkTransform> rigid = Turn(center, 40.0, lift);
+  filter->SetHandleTransform(0, rigid);
+  filter->SetHandleTransform(1, rigid);
+  filter->Update();
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    double expected[3];
+    rigid->TransformPoint(beam->GetPoint(i), expected);
+    worst = std::max(worst, Distance(expected, output->GetPoint(i)));
+  }
+  std::printf("rigid turn of the whole beam: largest error %.2e of the diagonal\n",
+    worst / beam->GetLength());
+  EXPECT_LT(worst, 1e-3 * beam->GetLength());
+  EXPECT_EQ(VolumeMeshes::Measure(output).Inverted, 0);
+}
+
+TEST(VolumeDeformation, HexBeamBendLeavesNoInvertedCell)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  const double lift[3] = { 0.0, 0.0, 1.5 };
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -90.0, lift));
+  filter->Update();
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  const VolumeMeshes::Validity validity = VolumeMeshes::Measure(output);
+  std::printf("beam bent 90 degrees: %d iterations, smallest scaled Jacobian %.3f\n",
+    filter->GetNumberOfVolumeIterations(), validity.SmallestScaledJacobian);
+  EXPECT_EQ(validity.Inverted, 0);
+  EXPECT_EQ(filter->GetNumberOfFailedCells(), 0);
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+  // The filter's ScaledJacobian agrees with Verdict's on hexahedra's smallest corner.
+  EXPECT_GT(output->GetCellData()->GetArray("ScaledJacobian")->GetRange()[0], 0.0);
+  // The zone reaches the region's radius from the region: beyond twice the region, at rest.
+  const double radius = 3.0 * (1.0 + std::pow(2.0, filter->GetNumberOfZoneGrowths()));
+  EXPECT_GT(ExpectFarPointsUntouched(beam, output, filter->GetHandleCenter(), radius), 0);
+}
+
+class TetgenBend : public ::testing::TestWithParam<std::tuple<std::string, double>>
+{
+};
+
+TEST_P(TetgenBend, NoInvertedCellAndTheBoundaryMet)
+{
+  // The edits: the handle on the boundary point farthest from the centroid (radius
+  // 0.03 of the diagonal), region 0.3, turned about the axis across, lifted 0.1 of the
+  // diagonal the way it turns.
+  const auto [name, degrees] = GetParam();
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = TetgenMesh(name);
+  ASSERT_TRUE(mesh);
+  const VolumeMeshes::Edit edit = VolumeMeshes::FarEdit(mesh, degrees, 0.1);
+  vtkNew<Filter> filter;
+  filter->SetInputData(mesh);
+  filter->SetRadiusUnitsToDiagonalFraction();
+  filter->SetHandleCenter(edit.Center);
+  filter->SetHandleRadius(0.03);
+  filter->SetROIRadius(0.3);
+  filter->SetRotationModeToAsRigidAsPossible();
+  filter->SetHandleTransform(edit.At(1.0));
+  filter->Update();
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  const VolumeMeshes::Validity validity = VolumeMeshes::Measure(output);
+  std::printf("%s turned %.0f degrees: %d tetrahedra in the zone, %d iterations, smallest "
+              "scaled Jacobian %.4f\n",
+    name.c_str(), degrees, filter->GetNumberOfZoneTetrahedra(), filter->GetNumberOfVolumeIterations(),
+    validity.SmallestScaledJacobian);
+  EXPECT_EQ(validity.Inverted, 0);
+  EXPECT_EQ(filter->GetNumberOfFailedCells(), 0);
+  // The boundary is the surface filter's edit, exactly.
+  vtkPoints* surface = filter->GetSurfaceFilter()->GetOutput()->GetPoints();
+  vtkIdType moved = 0;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    if (!SamePoint(surface, mesh->GetPoints(), i))
+    {
+      ++moved;
+      ASSERT_TRUE(SamePoint(surface, output->GetPoints(), i)) << "boundary point " << i;
+    }
+  }
+  EXPECT_GT(moved, 0);
+  const double radius =
+    mesh->GetLength() * 0.3 * (1.0 + std::pow(2.0, filter->GetNumberOfZoneGrowths()));
+  ExpectFarPointsUntouched(mesh, output, edit.Center, radius);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, TetgenBend,
+  ::testing::Values(std::make_tuple(std::string("spot"), 90.0), std::make_tuple(std::string("homer"), 60.0)),
+  [](const ::testing::TestParamInfo<TetgenBend::ParamType>& info) {
+    return std::get<0>(info.param);
+  });
+
+TEST(VolumeDeformation, MixedCellsBend)
+{
+  // The beam's far half in wedges (each hexahedron split across a diagonal), a pyramid cap
+  // would not share faces: wedges and hexahedra meet on quadrilaterals.
+  vtkSmartPointer<vtkUnstructuredGrid> hexes = Beam();
+  vtkNew<vtkUnstructuredGrid> mixed;
+  mixed->SetPoints(hexes->GetPoints());
+  for (vtkIdType cell = 0; cell < hexes->GetNumberOfCells(); ++cell)
+  {
+    vtkIdType count;
+    const vtkIdType* p;
+    hexes->GetCellPoints(cell, count, p);
+    if (hexes->GetPoint(p[0])[0] < 4.0)
+    {
+      mixed->InsertNextCell(VTK_HEXAHEDRON, 8, p);
+      continue;
+    }
+    // Split along the diagonal 0-2 of the bottom face (and 4-6 of the top).
+    const vtkIdType first[6] = { p[0], p[1], p[2], p[4], p[5], p[6] };
+    const vtkIdType second[6] = { p[0], p[2], p[3], p[4], p[6], p[7] };
+    mixed->InsertNextCell(VTK_WEDGE, 6, first);
+    mixed->InsertNextCell(VTK_WEDGE, 6, second);
+  }
+  vtkSmartPointer<Filter> filter = BeamEdit(mixed);
+  const double lift[3] = { 0.0, 0.0, 1.0 };
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -60.0, lift));
+  filter->Update();
+  EXPECT_EQ(filter->GetErrorCode(), 0);
+  EXPECT_EQ(filter->GetNumberOfFailedCells(), 0);
+  EXPECT_GT(filter->GetOutput()->GetCellData()->GetArray("ScaledJacobian")->GetRange()[0], 0.0);
+  EXPECT_GT(filter->GetNumberOfZonePoints(), 0);
+}
+
+TEST(VolumeDeformation, DragReusesTheZoneAndTheReleaseSettles)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  const double lift[3] = { 0.0, 0.0, 0.3 };
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -5.0, lift));
+  filter->Update();
+  filter->DraggingOn();
+  for (int step = 2; step <= 6; ++step)
+  {
+    filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -5.0 * step, lift));
+    filter->Update();
+    EXPECT_EQ(filter->GetVolumeSetupTime(), 0.0) << "step " << step;
+    EXPECT_LE(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
+    EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+  }
+  filter->DraggingOff();
+  filter->Update();
+  EXPECT_GT(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+}
+
+TEST(VolumeDeformation, UnreachableBoundaryIsReportedNotInverted)
+{
+  // The end pushed back through the beam: the boundary's edit folds onto itself, and no
+  // interior without inverted cells fills it.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  filter->SetHandleTranslation(-6.0, 0.0, 0.0);
+  ErrorCatcher warnings(filter, vtkCommand::WarningEvent);
+  filter->Update();
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  EXPECT_GT(filter->GetNumberOfFailedCells(), 0);
+  EXPECT_NE(warnings.Messages.find("could not follow the edit"), std::string::npos)
+    << warnings.Messages;
+  EXPECT_EQ(VolumeMeshes::Measure(output).Inverted, 0);
+  vtkDataArray* failed = output->GetCellData()->GetArray("EditFailed");
+  double marked = 0.0;
+  for (vtkIdType i = 0; i < failed->GetNumberOfTuples(); ++i)
+  {
+    marked += failed->GetTuple1(i);
+  }
+  EXPECT_EQ(marked, filter->GetNumberOfFailedCells());
+}
+
+TEST(VolumeDeformation, CommitMakesTheVolumeTheNextRest)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  filter->SetHandleTranslation(0.0, 0.0, 1.0);
+  filter->Update();
+  vtkNew<vtkPoints> edited;
+  edited->SetDataTypeToDouble();
+  edited->DeepCopy(filter->GetOutput()->GetPoints());
+  filter->CommitEdit();
+  EXPECT_EQ(filter->GetNumberOfCommits(), 1);
+  EXPECT_EQ(filter->GetHandleTranslation()[2], 0.0);
+  filter->Update();
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    worst = std::max(worst, Distance(edited->GetPoint(i), filter->GetOutput()->GetPoint(i)));
+  }
+  EXPECT_EQ(worst, 0.0) << "the committed volume at rest";
+  // The next edit starts from the committed volume.
+  filter->SetHandleTranslation(0.0, 0.0, 1.0);
+  filter->Update();
+  EXPECT_GT(filter->GetOutput()->GetBounds()[5], 2.5);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+  filter->SetHandleTranslation(0.0, 0.0, 0.0);
+  EXPECT_TRUE(filter->UndoCommit());
+  filter->Update();
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    ASSERT_TRUE(SamePoint(beam->GetPoints(), filter->GetOutput()->GetPoints(), i));
+  }
+}
+
+// Bad input: a clear error, and the input passed through.
+struct BadGrid
+{
+  const char* Name;
+  vtkSmartPointer<vtkUnstructuredGrid> (*Make)();
+  const char* Message;
+};
+
+// What ctest's test names show of a case.
+void PrintTo(const BadGrid& grid, std::ostream* os)
+{
+  *os << grid.Name;
+}
+
+class VolumeErrors : public ::testing::TestWithParam<BadGrid>
+{
+};
+
+TEST_P(VolumeErrors, ReportsAndPassesTheInputThrough)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> input = GetParam().Make();
+  vtkNew<Filter> filter;
+  filter->SetInputData(input);
+  filter->SetHandleCenter(input->GetNumberOfPoints() ? input->GetPoint(0) : input->GetCenter());
+  filter->SetHandleTranslation(0.0, 0.0, 0.5);
+  ErrorCatcher errors(filter);
+  filter->Update();
+  EXPECT_NE(errors.Messages.find(GetParam().Message), std::string::npos) << errors.Messages;
+  EXPECT_NE(filter->GetErrorCode(), 0);
+  vtkUnstructuredGrid* output = filter->GetOutput();
+  EXPECT_EQ(output->GetNumberOfPoints(), input->GetNumberOfPoints());
+  EXPECT_EQ(output->GetNumberOfCells(), input->GetNumberOfCells());
+  EXPECT_EQ(output->GetPoints(), input->GetPoints());
+}
+
+namespace
+{
+vtkSmartPointer<vtkUnstructuredGrid> Empty()
+{
+  return vtkSmartPointer<vtkUnstructuredGrid>::New();
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> TrianglesOnly()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  grid->SetPoints(points);
+  const vtkIdType triangle[3] = { 0, 1, 2 };
+  grid->InsertNextCell(VTK_TRIANGLE, 3, triangle);
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> QuadraticTetrahedron()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  const double corners[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  const int edges[6][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
+  for (const auto& c : corners)
+  {
+    points->InsertNextPoint(c);
+  }
+  for (const auto& e : edges)
+  {
+    points->InsertNextPoint((corners[e[0]][0] + corners[e[1]][0]) / 2,
+      (corners[e[0]][1] + corners[e[1]][1]) / 2, (corners[e[0]][2] + corners[e[1]][2]) / 2);
+  }
+  grid->SetPoints(points);
+  const vtkIdType ids[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
+  grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, ids);
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> OneCellInverted()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = VolumeMeshes::HexBeam(6, 2, 2, 3.0);
+  // Cell 7's top and bottom faces swapped: every corner of it turns inside out.
+  vtkIdType count;
+  const vtkIdType* p;
+  beam->GetCellPoints(7, count, p);
+  const vtkIdType swapped[8] = { p[4], p[5], p[6], p[7], p[0], p[1], p[2], p[3] };
+  beam->ReplaceCell(7, 8, swapped);
+  return beam;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> CubesSharingAnEdge()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k <= 1; ++k)
+  {
+    for (int j = 0; j <= 2; ++j)
+    {
+      for (int i = 0; i <= 2; ++i)
+      {
+        points->InsertNextPoint(i, j, k);
+      }
+    }
+  }
+  grid->SetPoints(points);
+  auto id = [](int i, int j, int k) { return static_cast<vtkIdType>(k * 9 + j * 3 + i); };
+  for (auto [i, j] : { std::make_pair(0, 0), std::make_pair(1, 1) })
+  {
+    const vtkIdType hex[8] = { id(i, j, 0), id(i + 1, j, 0), id(i + 1, j + 1, 0), id(i, j + 1, 0),
+      id(i, j, 1), id(i + 1, j, 1), id(i + 1, j + 1, 1), id(i, j + 1, 1) };
+    grid->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+  }
+  return grid;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> NaNPoint()
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = VolumeMeshes::HexBeam(4, 2, 2, 2.0);
+  beam->GetPoints()->SetPoint(5, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+  return beam;
+}
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, VolumeErrors,
+  ::testing::Values(BadGrid{ "Empty", &Empty, "empty" },
+    BadGrid{ "NoVolumeCells", &TrianglesOnly, "no 3D cells" },
+    BadGrid{ "NonLinear", &QuadraticTetrahedron, "non-linear cells" },
+    BadGrid{ "InvertedAtRest", &OneCellInverted, "1 cell is flat or inverted at rest (the first is cell 7)" },
+    BadGrid{ "NonManifold", &CubesSharingAnEdge, "not manifold" },
+    BadGrid{ "NaN", &NaNPoint, "NaN" }),
+  [](const ::testing::TestParamInfo<BadGrid>& info) { return std::string(info.param.Name); });
