@@ -2,6 +2,7 @@
 
 #include "EditPipeline.h"
 #include "LandmarkSource.h"
+#include "VolumeFollower.h"
 #include "SparseCholesky.h"
 
 #include "vtkDataArray.h"
@@ -14,6 +15,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +59,9 @@ struct vtkLaplacianLandmarkWarp::vtkInternals
   lep::LandmarkSource Source;
   lep::EditPipeline Pipeline;
   vtkNew<vtkPoints> PortTargets;
+  // A volume mesh's: its interior, and its boundary surface as warped.
+  lep::VolumeFollower Volume;
+  vtkNew<vtkPolyData> WarpedBoundary;
 };
 
 vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
@@ -68,6 +73,7 @@ vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
   }
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
+  this->Internals->Volume.SetFilter(this);
 }
 
 vtkLaplacianLandmarkWarp::~vtkLaplacianLandmarkWarp()
@@ -89,7 +95,9 @@ int vtkLaplacianLandmarkWarp::FillInputPortInformation(int port, vtkInformation*
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
-  return this->Superclass::FillInputPortInformation(port, info);
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
 }
 
 vtkMTimeType vtkLaplacianLandmarkWarp::GetMTime()
@@ -118,8 +126,8 @@ void vtkLaplacianLandmarkWarp::SetDragging(vtkTypeBool dragging)
 int vtkLaplacianLandmarkWarp::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPointSet* output = vtkPointSet::GetData(outputVector);
   lep::EditPipeline& pipeline = this->Internals->Pipeline;
   pipeline.BeginUpdate();
   this->NumberOfLandmarks = 0;
@@ -134,14 +142,19 @@ int vtkLaplacianLandmarkWarp::RequestData(
       "one process)");
     return 1;
   }
+  // A volume mesh warps through its boundary surface.
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkPolyData* surface = grid ? this->BoundaryOf(grid) : vtkPolyData::SafeDownCast(input);
+  vtkPolyData* warped = grid ? this->Internals->WarpedBoundary.Get() : vtkPolyData::SafeDownCast(output);
   vtkPoints* sources = nullptr;
   vtkPoints* targets = nullptr;
-  if (!pipeline.Check(lep::SurfaceAdapter::CheckSurface(input)) ||
+  if (!surface || !pipeline.Check(lep::SurfaceAdapter::CheckSurface(surface)) ||
     !this->FindLandmarks(sources, targets))
   {
     return 1;
   }
-  const double diagonal = input->GetLength();
+  warped->ShallowCopy(surface);
+  const double diagonal = surface->GetLength();
   lep::LandmarkSource& source = this->Internals->Source;
   source.Sources = sources;
   source.Targets = targets;
@@ -149,11 +162,51 @@ int vtkLaplacianLandmarkWarp::RequestData(
   source.MaximumDistance = this->MaximumBindingDistance * diagonal;
   source.Exact = this->ExactFit != 0;
   source.Weight = this->ExactFit ? ExactFitWeight : this->LandmarkWeight;
-  if (pipeline.Run(input, output, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0))
+  if (pipeline.Run(surface, warped, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0))
   {
-    this->ReportFit(output, targets);
+    this->ReportFit(warped, targets);
+    if (grid && this->FollowBoundary(warped, vtkUnstructuredGrid::SafeDownCast(output)))
+    {
+      output->GetFieldData()->AddArray(warped->GetFieldData()->GetArray("LandmarkDistance"));
+    }
   }
   return 1;
+}
+
+vtkPolyData* vtkLaplacianLandmarkWarp::BoundaryOf(vtkUnstructuredGrid* grid)
+{
+  lep::VolumeFollower& volume = this->Internals->Volume;
+  std::string error = lep::VolumeMesh::CheckGrid(grid);
+  if (error.empty())
+  {
+    error = volume.Update(grid, grid->GetPoints());
+  }
+  return this->Internals->Pipeline.Check(error) ? volume.GetMesh().GetBoundary() : nullptr;
+}
+
+bool vtkLaplacianLandmarkWarp::FollowBoundary(vtkPolyData* warpedBoundary, vtkUnstructuredGrid* output)
+{
+  lep::EditPipeline& pipeline = this->Internals->Pipeline;
+  lep::VolumeFollower& volume = this->Internals->Volume;
+  const lep::OutputEdit edit = pipeline.GetEdit();
+  lep::VolumeFollower::Settings settings;
+  settings.Dragging = this->Dragging != 0;
+  if (this->Solver == SOLVER_SIMPLICIAL_LDLT)
+  {
+    settings.Backend = le::SolverBackend::SimplicialLDLT;
+  }
+  if (!pipeline.Check(volume.Follow(edit.Moved->Ids, warpedBoundary->GetPoints(), edit.RegionVersion, settings)))
+  {
+    output->ShallowCopy(this->GetInputDataObject(0, 0));
+    return false;
+  }
+  const std::string warning = volume.FailureWarning();
+  if (!warning.empty() && !settings.Dragging)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  volume.Write(output);
+  return true;
 }
 
 bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& targets)

@@ -22,9 +22,14 @@
  * default "Target" (SetInputArrayToProcess(0, 1, 0, POINTS, name)), the targets. The port takes
  * precedence. ParaView's "Laplacian Landmark Warp" filter uses the port.
  *
- * Output: the input with the warped components' points moved, all point and cell data passed
- * through, normals refreshed, and a "LandmarkDistance" field array, how far each landmark
- * ended from its target (0 up to rounding with ExactFit). On bad input the filter reports an
+ * A volume mesh (a vtkUnstructuredGrid of linear 3D cells) warps the same way: the landmarks
+ * are bound to its boundary surface, and the interior near the warped part follows without
+ * inverting a cell, as in vtkLaplacianVolumeDeformationFilter (with its ScaledJacobian and
+ * EditFailed cell arrays).
+ *
+ * Output: the input (a vtkPolyData or a vtkUnstructuredGrid) with the warped components' points
+ * moved, all point and cell data passed through, normals refreshed, and a "LandmarkDistance"
+ * field array, how far each landmark ended from its target (0 up to rounding with ExactFit). On bad input the filter reports an
  * error, passes the input through and sets GetErrorCode() to vtkErrorCode::UserError.
  * Documentation/landmark-warps.md has the guide.
  *
@@ -34,12 +39,14 @@
 #define vtkLaplacianLandmarkWarp_h
 
 #include "vtkLaplacianEditingFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkPointSetAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
 class vtkAlgorithmOutput;
 class vtkPoints;
+class vtkPolyData;
+class vtkUnstructuredGrid;
 namespace LaplacianEditing
 {
 namespace Pipeline
@@ -48,11 +55,11 @@ struct SolverSettings;
 }
 }
 
-class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianLandmarkWarp : public vtkPolyDataAlgorithm
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianLandmarkWarp : public vtkPointSetAlgorithm
 {
 public:
   static vtkLaplacianLandmarkWarp* New();
-  vtkTypeMacro(vtkLaplacianLandmarkWarp, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkLaplacianLandmarkWarp, vtkPointSetAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   // The deformation filter's values.
@@ -239,6 +246,10 @@ private:
   LaplacianEditing::Pipeline::SolverSettings Settings(double diagonal) const;
   // After a solve: the warning for an exact fit that missed, and the landmarks' misses.
   void ReportFit(vtkPolyData* output, vtkPoints* targets);
+  // A volume mesh's boundary surface, or null with the error reported.
+  vtkPolyData* BoundaryOf(vtkUnstructuredGrid* grid);
+  // The interior follows the boundary's warp; false, with the error reported, if it cannot.
+  bool FollowBoundary(vtkPolyData* warpedBoundary, vtkUnstructuredGrid* output);
 
   vtkPoints* SourceLandmarks = nullptr;
   vtkPoints* TargetLandmarks = nullptr;

@@ -169,12 +169,10 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
       vtkErrorMacro(<< error);
       return false;
     }
-    const int failed = internals.Follower.GetFacts().FailedCells;
-    if (failed > 0 && !settings.Dragging)
+    const std::string warning = internals.Follower.FailureWarning();
+    if (!warning.empty() && !settings.Dragging)
     {
-      vtkWarningMacro(<< failed << " cells could not follow the edit without inverting a cell: "
-                      << "boundary points were left up to " << internals.Follower.GetFacts().LargestMiss
-                      << " short of their edited positions (cell array EditFailed).");
+      vtkWarningMacro(<< warning);
     }
   }
   this->UpdateProgress(0.9);

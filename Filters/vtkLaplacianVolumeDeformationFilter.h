@@ -126,7 +126,11 @@ public:
   /** Iterations at most of an update that is not a drag step. Default 300. */
   vtkSetClampMacro(VolumeIterations, int, 1, 100000);
   vtkGetMacro(VolumeIterations, int);
-  /** Iterations of an update while Dragging. Default 8. */
+  /**
+   * Iterations of an update while Dragging. Default 1: a drag step's first iteration carries
+   * the boundary's motion into the interior (the harmonic extension of its increment, cut short
+   * of any flattening cell); the update after the drag iterates to convergence.
+   */
   vtkSetClampMacro(DragVolumeIterations, int, 1, 100000);
   vtkGetMacro(DragVolumeIterations, int);
   ///@}
@@ -160,7 +164,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int VolumeIterations = 300;
-  int DragVolumeIterations = 8;
+  int DragVolumeIterations = 1;
 
 private:
   vtkLaplacianVolumeDeformationFilter(const vtkLaplacianVolumeDeformationFilter&) = delete;

@@ -22,8 +22,10 @@ constexpr double Momentum = (1.0 - 0.1) / (1.0 + 0.1);
 // The continuation's first pull (as stiff as the mesh around a point) and its growth a stage.
 constexpr double FirstWeight = 1.0;
 constexpr double ContinuationRatio = 10.0;
+// Continuations at most in one solve.
+constexpr int Rounds = 2;
 // The earlier stages only bring the points near: they stop at this relative decrease.
-constexpr double StageTolerance = 1e-2;
+constexpr double StageTolerance = 1e-3;
 // A step this short says the proxy has lost the energy's shape: it is reweighted.
 constexpr double StallStep = 0.05;
 
@@ -358,6 +360,19 @@ double InjectiveDeformation::Energy(
   return energy + this->Penalty(points, targets);
 }
 
+double InjectiveDeformation::LargestMiss(const Positions& x, const Positions& targets) const
+{
+  double largest = 0.0;
+  for (int p : this->Unknowns)
+  {
+    if (this->Kinds[p] == PointKind::Targeted)
+    {
+      largest = std::max(largest, (x.row(p) - targets.row(p)).norm());
+    }
+  }
+  return largest;
+}
+
 double InjectiveDeformation::Penalty(const Positions& x, const Positions& targets) const
 {
   double penalty = 0.0;
@@ -371,18 +386,27 @@ double InjectiveDeformation::Penalty(const Positions& x, const Positions& target
   return penalty;
 }
 
-void InjectiveDeformation::Gradient(const Positions& points, const Positions& targets,
+double InjectiveDeformation::Gradient(const Positions& points, const Positions& targets,
   Eigen::MatrixXd& gradient, const ParallelFor& loop) const
 {
   const Rows x = points;
   const int m = static_cast<int>(this->Tets.rows());
   Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor> local(m, 12);
+  std::vector<double> energies(m);
   loop(0, m, [&](int first, int last) {
     for (int c = first; c < last; ++c)
     {
       const Matrix3& B = this->RestInverse[c];
-      const Matrix3 J = Edges(x, this->Tets, c) * B;
+      const Matrix3 edges = Edges(x, this->Tets, c);
+      if (!(edges.determinant() > 0.0))
+      {
+        energies[c] = Infinity;
+        local.row(c).setZero();
+        continue;
+      }
+      const Matrix3 J = edges * B;
       const Matrix3 inverseT = J.inverse().transpose();
+      energies[c] = this->Volume[c] * (J.squaredNorm() + inverseT.squaredNorm() - 6.0);
       const Matrix3 dJ = 2.0 * this->Volume[c] * (J - inverseT * inverseT.transpose() * inverseT);
       const Matrix3 dEdges = dJ * B.transpose(); // column k: the gradient at corner k + 1
       Eigen::Map<Eigen::Matrix<double, 3, 4>> corners(local.row(c).data());
@@ -391,8 +415,10 @@ void InjectiveDeformation::Gradient(const Positions& points, const Positions& ta
     }
   });
   gradient.setZero(this->Unknowns.size(), 3);
+  double energy = 0.0;
   for (int c = 0; c < m; ++c)
   {
+    energy += energies[c];
     for (int i = 0; i < 4; ++i)
     {
       const int u = this->Unknown[this->Tets(c, i)];
@@ -410,6 +436,7 @@ void InjectiveDeformation::Gradient(const Positions& points, const Positions& ta
       gradient.row(u) += 2.0 * this->Lambda * this->Pull[p] * (points.row(p) - targets.row(p));
     }
   }
+  return energy + this->Penalty(points, targets);
 }
 
 double InjectiveDeformation::LargestSafeStep(const Positions& points,
@@ -488,17 +515,21 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   Positions direction = Positions::Zero(n, 3);
   Positions trial(n, 3);
 
-  // One proxy step from `from` (energy `fromEnergy`): the trial point and its energy; false if
-  // the energy does not fall enough along the step.
-  auto step = [&](const Positions& from, double fromEnergy, double& trialEnergy) {
-    this->Gradient(from, targets, gradient, loop);
+  // One proxy step from `from`: its energy, the trial point and its energy; false if `from` has
+  // a flat tetrahedron or the energy does not fall enough along the step.
+  auto step = [&](const Positions& from, double& fromEnergy, double& trialEnergy) {
+    trialEnergy = Infinity;
+    fromEnergy = this->Gradient(from, targets, gradient, loop);
+    if (!std::isfinite(fromEnergy))
+    {
+      return false;
+    }
     const Eigen::MatrixXd solved = -this->Factor.Solve(gradient, loop);
     for (std::size_t u = 0; u < this->Unknowns.size(); ++u)
     {
       direction.row(this->Unknowns[u]) = solved.row(u);
     }
     const double slope = (gradient.array() * solved.array()).sum();
-    trialEnergy = Infinity;
     if (!(slope < 0.0))
     {
       return false;
@@ -529,6 +560,14 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   }
   std::reverse(weights.begin(), weights.end());
   double energy = still ? 0.0 : Infinity;
+  // A continuation that ends with targets unmet runs once more from where it ended: the stall
+  // that left them is rarely met twice.
+  for (int round = 0; round < Rounds && !still; ++round)
+  {
+  if (round > 0 && (snap <= 0.0 || this->LargestMiss(points, targets) <= snap))
+  {
+    break;
+  }
   for (double weight : weights)
   {
     if (still || report.Iterations >= options.MaximumIterations)
@@ -541,10 +580,8 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
       break;
     }
     this->Lambda = weight;
-    energy = this->Energy(points, targets, loop);
     Positions previous = points;
-    for (int stageIterations = 0;
-         std::isfinite(energy) && report.Iterations < options.MaximumIterations; ++stageIterations)
+    for (int stageIterations = 0; report.Iterations < options.MaximumIterations; ++stageIterations)
     {
       ++report.Iterations;
       // AQP: the step starts from x + theta (x - x_before), theta short of any flat tetrahedron.
@@ -556,9 +593,8 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
         const double theta = std::min(Momentum,
           SafeFraction * this->LargestSafeStep(points, momentum, Momentum / SafeFraction, loop));
         const Positions start = points + theta * momentum;
-        const double startEnergy = this->Energy(start, targets, loop);
-        accepted = std::isfinite(startEnergy) && step(start, startEnergy, trialEnergy) &&
-          trialEnergy < energy;
+        double startEnergy = Infinity;
+        accepted = step(start, startEnergy, trialEnergy) && trialEnergy < energy;
       }
       // Without momentum where it did not lower the energy: the energy never rises.
       if (!accepted && !step(points, energy, trialEnergy))
@@ -586,6 +622,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
         break;
       }
     }
+  }
   }
   // The distortion before the snap, which moves targeted points by less than `snap`.
   const double penalty = this->Penalty(points, targets);

@@ -106,9 +106,13 @@ private:
   // Weights each tetrahedron's block by the energy's curvature at `points`.
   void Reweight(const Positions& points, const ParallelFor& loop);
   double Energy(const Positions& points, const Positions& targets, const ParallelFor& loop) const;
+  // The largest distance of a targeted point from its target.
+  double LargestMiss(const Positions& points, const Positions& targets) const;
   // The targets' pull, sum_t lambda k_t |x_t - target_t|^2.
   double Penalty(const Positions& points, const Positions& targets) const;
-  void Gradient(const Positions& points, const Positions& targets, Eigen::MatrixXd& gradient,
+  // The gradient over the unknowns at `points`; returns the energy there (infinity if a
+  // tetrahedron is flat or inverted).
+  double Gradient(const Positions& points, const Positions& targets, Eigen::MatrixXd& gradient,
     const ParallelFor& loop) const;
   // The step along `direction` at which the first tetrahedron flattens; infinity if none does
   // before `below`.

@@ -214,27 +214,51 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   this->LastFacts.SolveTime = watch.Seconds();
   this->LastFacts.ZonePoints = static_cast<int>(this->Zone.Points.size());
   this->LastFacts.ZoneTetrahedra = static_cast<int>(this->Zone.Tets.rows());
-  // The cells around a point left short of its target.
   this->LastEdited = edited;
   this->LastEditedTime = edited->GetMTime();
+  // Each cell's quality, and the failures: cells around a point left short of its target, and
+  // any cell Verdict would see folded that no corner tetrahedron shows (a hexahedron's centre).
+  const std::vector<vtkIdType>& cells = this->Zone.Cells;
+  this->ZoneQuality.resize(cells.size());
+  auto position = [this](vtkIdType id) { return this->Position(id); };
+  SMPFor(0, static_cast<int>(cells.size()), [&](int first, int last) {
+    for (int k = first; k < last; ++k)
+    {
+      this->ZoneQuality[k] = this->Mesh.Quality(cells[k], position);
+    }
+  });
   this->FailedCells.clear();
   const std::vector<double>& misses = this->Solver.GetMisses();
-  for (vtkIdType cell : this->Zone.Cells)
+  for (std::size_t k = 0; k < cells.size(); ++k)
   {
     vtkIdType count = 0;
     const vtkIdType* ids = nullptr;
-    this->Mesh.GetGrid()->GetCellPoints(cell, count, ids);
-    if (std::any_of(ids, ids + count, [&](vtkIdType id) {
-          const int row = this->LocalOf[id];
-          return row >= 0 && misses[row] > this->Snap;
-        }))
+    this->Mesh.GetGrid()->GetCellPoints(cells[k], count, ids);
+    const bool missed = this->LastFacts.LargestMiss > this->Snap &&
+      std::any_of(ids, ids + count, [&](vtkIdType id) {
+        const int row = this->LocalOf[id];
+        return row >= 0 && misses[row] > this->Snap;
+      });
+    if (missed || this->ZoneQuality[k] <= 0.0)
     {
-      this->FailedCells.push_back(cell);
+      this->FailedCells.push_back(cells[k]);
     }
   }
   this->LastFacts.FailedCells = static_cast<int>(this->FailedCells.size());
   this->Followed = true;
   return {};
+}
+
+std::string VolumeFollower::FailureWarning() const
+{
+  if (this->LastFacts.FailedCells == 0)
+  {
+    return {};
+  }
+  return std::to_string(this->LastFacts.FailedCells) +
+    " cells could not follow the edit without inverting a cell: boundary points were left up "
+    "to " + std::to_string(this->LastFacts.LargestMiss) +
+    " (mesh units) short of their edited positions (cell array EditFailed).";
 }
 
 Vector3 VolumeFollower::Position(vtkIdType id) const
@@ -264,10 +288,9 @@ void VolumeFollower::Write(vtkUnstructuredGrid* output)
   }));
   vtkDataArray* quality =
     this->Quality.Update(this->RestQuality, cells, key, [&](vtkDataArray* array) {
-      auto position = [this](vtkIdType id) { return this->Position(id); };
-      for (vtkIdType cell : cells)
+      for (std::size_t k = 0; k < cells.size(); ++k)
       {
-        array->SetComponent(cell, 0, this->Mesh.Quality(cell, position));
+        array->SetComponent(cells[k], 0, this->ZoneQuality[k]);
       }
     });
   vtkDataArray* failures =

@@ -44,7 +44,7 @@ public:
   {
     /// Iterations at most of a settled update, and of a drag step.
     int Iterations = 300;
-    int DragIterations = 8;
+    int DragIterations = 1;
     bool Dragging = false;
     SolverBackend Backend = SolverBackend::Cholmod;
   };
@@ -86,6 +86,9 @@ public:
     return this->Followed && edited == this->LastEdited && edited->GetMTime() == this->LastEditedTime;
   }
 
+  /// What a filter warns after a settled Follow that left targets unmet; empty if none was.
+  std::string FailureWarning() const;
+
   /// Writes the last Follow into `output`, a shallow copy of the input.
   void Write(vtkUnstructuredGrid* output);
 
@@ -114,6 +117,7 @@ private:
   std::uint64_t Region = 0;
   bool Followed = false;
   std::vector<vtkIdType> Movable, FailedCells;
+  std::vector<double> ZoneQuality; // of the zone's cells
   std::uint64_t Writes = 0;
   OutputArray Points;
   OutputArray Quality;

@@ -25,7 +25,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
-#include <functional>
+#include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,15 @@ namespace Pipeline
 class VTKLAPLACIANEDITINGFILTERS_EXPORT VolumeMesh
 {
 public:
+  /// The cells whose quality has more than corners.
+  enum class CellKind : unsigned char
+  {
+    Tetrahedron,
+    Hexahedron,
+    Voxel,
+    Other
+  };
+
   /// What every volume editor requires of its input: points, at least one 3D cell, linear cells
   /// only. Returns an error message, empty on success.
   static std::string CheckGrid(vtkUnstructuredGrid* grid);
@@ -75,9 +85,50 @@ public:
     Zone& zone) const;
 
   /// The scaled Jacobian of cell `cell` with its points at `position(id)`: Verdict's for a
-  /// tetrahedron (1 regular), the smallest corner's otherwise (1 for a cube's); negative where
-  /// inverted, NaN for a cell that is not 3D.
-  double Quality(vtkIdType cell, const std::function<Vector3(vtkIdType)>& position) const;
+  /// tetrahedron (1 regular) and a hexahedron (its corners' and its centre's, 1 for a cube), the
+  /// smallest corner's otherwise; negative where inverted, NaN for a cell that is not 3D.
+  template <typename Position>
+  double Quality(vtkIdType cell, const Position& position) const
+  {
+    const int begin = this->CellCorners[cell], end = begin + this->TrueCorners[cell];
+    auto corner = [&](int c, int k) -> Vector3 { return position(this->Corners(c, k)); };
+    if (begin == end)
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    if (this->Kinds[cell] == CellKind::Tetrahedron)
+    {
+      return InjectiveDeformation::TetrahedronScaledJacobian(
+        corner(begin, 0), corner(begin, 1), corner(begin, 2), corner(begin, 3));
+    }
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int c = begin; c < end; ++c)
+    {
+      smallest = std::min(smallest,
+        InjectiveDeformation::CornerScaledJacobian(
+          corner(c, 0), corner(c, 1), corner(c, 2), corner(c, 3)));
+    }
+    if (this->Kinds[cell] != CellKind::Other)
+    {
+      // Verdict's ninth sample of a hexahedron: its principal axes, at the centre. The corner
+      // tetrahedra start at the cell's points 0 to 7, oriented as the cell's type is.
+      Vector3 p[8];
+      for (int k = 0; k < 8; ++k)
+      {
+        p[k] = corner(begin + k, 0);
+      }
+      const bool voxel = this->Kinds[cell] == CellKind::Voxel;
+      const Vector3 axes[3] = {
+        voxel ? (p[1] - p[0] + p[3] - p[2] + p[5] - p[4] + p[7] - p[6]) : (p[1] - p[0] + p[2] - p[3] + p[5] - p[4] + p[6] - p[7]),
+        voxel ? (p[2] - p[0] + p[3] - p[1] + p[6] - p[4] + p[7] - p[5]) : (p[3] - p[0] + p[2] - p[1] + p[7] - p[4] + p[6] - p[5]),
+        p[4] - p[0] + p[5] - p[1] + p[6] - p[2] + p[7] - p[3]
+      };
+      const double lengths = axes[0].norm() * axes[1].norm() * axes[2].norm();
+      const double centre = lengths > 0.0 ? axes[0].dot(axes[1].cross(axes[2])) / lengths : 0.0;
+      smallest = std::min(smallest, this->Mirrored[cell] ? -centre : centre);
+    }
+    return smallest;
+  }
 
   /// The grid of the last build.
   vtkUnstructuredGrid* GetGrid() const { return this->Grid; }
@@ -92,6 +143,9 @@ private:
   Tetrahedra Corners; // grid point ids, positive at rest
   std::vector<vtkIdType> CornerCell;
   std::vector<int> CellCorners;                      // offsets: a cell's corners are consecutive
+  std::vector<CellKind> Kinds;
+  std::vector<unsigned char> TrueCorners; // per cell: its corners (inscribed ones follow)
+  std::vector<char> Mirrored;             // per cell: its type's cells are written mirrored
   std::vector<int> PointCornerOffsets, PointCorners; // the corners around each point
   std::vector<char> OnBoundary;
   vtkSmartPointer<vtkPolyData> Boundary;

@@ -170,7 +170,7 @@ vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, 
         << ", \"solve_seconds\": " << filter->GetSolveTime()
         << ", \"arap_iterations\": " << filter->GetNumberOfARAPIterations()
         << ", \"largest_miss\": " << filter->GetMaximumLandmarkDistance() / warp.Mesh->GetLength();
-  Report(warp, sources->GetNumberOfPoints(), mode, Measure(warp, filter->GetOutput()->GetPoints()),
+  Report(warp, sources->GetNumberOfPoints(), mode, Measure(warp, filter->GetPolyDataOutput()->GetPoints()),
     seconds, extra.str());
   return filter;
 }

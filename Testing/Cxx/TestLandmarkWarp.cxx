@@ -109,7 +109,7 @@ TEST(LandmarkWarp, LandmarksAtTheirSourcesGiveTheInputBack)
     warp->SetRotationMode(mode);
     warp->Update();
     EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::NoError);
-    EXPECT_LE(MaxPointDistance(warp->GetOutput(), bunny), 1e-12 * Diagonal(bunny));
+    EXPECT_LE(MaxPointDistance(warp->GetPolyDataOutput(), bunny), 1e-12 * Diagonal(bunny));
   }
 }
 
@@ -130,7 +130,7 @@ TEST(LandmarkWarp, ARigidMotionOfEveryLandmarkMovesTheSurfaceRigidly)
   {
     double p[3], q[3];
     map(spot->GetPoint(i), p);
-    warp->GetOutput()->GetPoint(i, q);
+    warp->GetPolyDataOutput()->GetPoint(i, q);
     worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
   }
   std::cout << "rigid motion: largest distance " << worst / Diagonal(spot) << " of the diagonal after "
@@ -150,14 +150,14 @@ TEST(LandmarkWarp, AnExactFitMeetsEveryTarget)
     auto warp = Warp(bunny, sources, targets);
     warp->SetRotationMode(mode);
     warp->Update();
-    const double miss = LargestMiss(bunny, warp->GetOutput(), sources, targets);
+    const double miss = LargestMiss(bunny, warp->GetPolyDataOutput(), sources, targets);
     EXPECT_LE(miss, 1e-9 * Diagonal(bunny));
     EXPECT_LE(warp->GetMaximumLandmarkDistance(), 1e-9 * Diagonal(bunny));
     auto* distances = vtkDoubleArray::SafeDownCast(
-      warp->GetOutput()->GetFieldData()->GetArray("LandmarkDistance"));
+      warp->GetPolyDataOutput()->GetFieldData()->GetArray("LandmarkDistance"));
     ASSERT_NE(distances, nullptr);
     EXPECT_EQ(distances->GetNumberOfTuples(), sources->GetNumberOfPoints());
-    EXPECT_GT(MaxPointDistance(warp->GetOutput(), bunny), 0.05 * Diagonal(bunny));
+    EXPECT_GT(MaxPointDistance(warp->GetPolyDataOutput(), bunny), 0.05 * Diagonal(bunny));
   }
 }
 
@@ -211,7 +211,7 @@ TEST(LandmarkWarp, ComponentsWithoutLandmarksStay)
   {
     double p[3], q[3];
     spheres->GetPoint(i, p);
-    warp->GetOutput()->GetPoint(i, q);
+    warp->GetPolyDataOutput()->GetPoint(i, q);
     const bool same = p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
     EXPECT_TRUE(i < firstRight || same) << "point " << i << " of the other sphere moved";
     moved += same ? 0 : 1;
@@ -243,7 +243,7 @@ TEST(LandmarkWarp, NewTargetsReuseTheFactorization)
   warp->DraggingOff();
   warp->Update();
   EXPECT_EQ(warp->GetNumberOfFactorizations(), factorizations);
-  EXPECT_LE(LargestMiss(bunny, warp->GetOutput(), sources, targets), 1e-9 * Diagonal(bunny));
+  EXPECT_LE(LargestMiss(bunny, warp->GetPolyDataOutput(), sources, targets), 1e-9 * Diagonal(bunny));
 }
 
 TEST(LandmarkWarp, LandmarksFromAPointSetOnPortOne)
@@ -266,14 +266,14 @@ TEST(LandmarkWarp, LandmarksFromAPointSetOnPortOne)
   byPort->SetLandmarksData(landmarks);
   byPort->Update();
   EXPECT_EQ(byPort->GetErrorCode(), vtkErrorCode::NoError);
-  EXPECT_EQ(MaxPointDistance(byPort->GetOutput(), byPoints->GetOutput()), 0.0);
+  EXPECT_EQ(MaxPointDistance(byPort->GetPolyDataOutput(), byPoints->GetPolyDataOutput()), 0.0);
 
   landmarks->GetPointData()->RemoveArray("Target");
   ErrorCatcher errors(byPort);
   byPort->Modified();
   byPort->Update();
   EXPECT_NE(errors.Messages.find("three components holding the targets"), std::string::npos);
-  EXPECT_EQ(MaxPointDistance(byPort->GetOutput(), bunny), 0.0);
+  EXPECT_EQ(MaxPointDistance(byPort->GetPolyDataOutput(), bunny), 0.0);
 }
 
 TEST(LandmarkWarp, PointAndCellDataPassThrough)
@@ -288,7 +288,7 @@ TEST(LandmarkWarp, PointAndCellDataPassThrough)
   auto sources = SurfacePoints(input, 50);
   auto warp = Warp(input, sources, Bent(input, sources, 2.0));
   warp->Update();
-  vtkPolyData* output = warp->GetOutput();
+  vtkPolyData* output = warp->GetPolyDataOutput();
   ASSERT_NE(output->GetPointData()->GetArray("PointIds"), nullptr);
   ASSERT_NE(output->GetCellData()->GetArray("CellIds"), nullptr);
   EXPECT_EQ(output->GetNumberOfCells(), input->GetNumberOfCells());
@@ -318,7 +318,7 @@ TEST(LandmarkWarp, FarLandmarksWarnOrFail)
     warp->Update();
     EXPECT_NE(warnings.Messages.find("farther from the surface than BindingTolerance"), std::string::npos);
     EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::NoError);
-    EXPECT_LE(MaxPointDistance(warp->GetOutput(), sphere), 1e-12 * diagonal);
+    EXPECT_LE(MaxPointDistance(warp->GetPolyDataOutput(), sphere), 1e-12 * diagonal);
     // The same landmarks, a stricter limit: now on no component.
     ErrorCatcher errors(warp);
     warp->SetMaximumBindingDistance(0.02);
@@ -331,7 +331,7 @@ TEST(LandmarkWarp, FarLandmarksWarnOrFail)
   warp->Update();
   EXPECT_NE(errors.Messages.find("Source landmark 0 lies on no component"), std::string::npos);
   EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::UserError);
-  EXPECT_EQ(MaxPointDistance(warp->GetOutput(), sphere), 0.0);
+  EXPECT_EQ(MaxPointDistance(warp->GetPolyDataOutput(), sphere), 0.0);
 }
 
 TEST(LandmarkWarp, BadLandmarksAreClearErrors)
@@ -360,7 +360,7 @@ TEST(LandmarkWarp, BadLandmarksAreClearErrors)
     warp->Update();
     EXPECT_NE(errors.Messages.find(bad.Message), std::string::npos) << errors.Messages;
     EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::UserError);
-    EXPECT_EQ(MaxPointDistance(warp->GetOutput(), bunny), 0.0); // the input, passed through
+    EXPECT_EQ(MaxPointDistance(warp->GetPolyDataOutput(), bunny), 0.0); // the input, passed through
   }
   // A surface without polygons.
   vtkNew<vtkPolyData> empty;
@@ -384,7 +384,7 @@ TEST(LandmarkWarp, APieceOfADistributedSurfaceIsRefused)
   EXPECT_NE(errors.Messages.find("needs the whole surface and was asked for one of 2 pieces"),
     std::string::npos);
   EXPECT_EQ(warp->GetErrorCode(), vtkErrorCode::UserError);
-  EXPECT_EQ(MaxPointDistance(warp->GetOutput(), bunny), 0.0);
+  EXPECT_EQ(MaxPointDistance(warp->GetPolyDataOutput(), bunny), 0.0);
 }
 
 TEST(LandmarkWarp, LandmarksATriangleCannotAllMeetWarnAndFitInLeastSquares)

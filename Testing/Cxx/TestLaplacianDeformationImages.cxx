@@ -13,13 +13,24 @@
 //   TwistModes      the bunny's ear twisted 120 degrees about its axis, in the same modes
 //   LandmarkWarp    the articulated known warp (KnownWarps.h) from 100 landmarks: the rest,
 //                   the true shape, VTK's thin-plate spline and vtkLaplacianLandmarkWarp
+//   VolumeClip      tetgen's spot, its head turned 90 degrees and lifted by
+//                   vtkLaplacianVolumeDeformationFilter: rest and edited, the cells on one side
+//                   of the plane across the turn, coloured by ScaledJacobian (red 0, blue 1)
 #include "EditingScene.h"
 #include "KnownWarps.h"
 #include "ReferenceEdits.h"
+#include "VolumeMeshes.h"
 
 #include "BumpyPlane.h"
 #include "vtkLaplacianDeformationFilter.h"
 #include "vtkLaplacianLandmarkWarp.h"
+#include "vtkLaplacianVolumeDeformationFilter.h"
+
+#include "vtkCellData.h"
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkExtractGeometry.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
 
 #include "vtkIntArray.h"
 #include "vtkMath.h"
@@ -249,9 +260,68 @@ Scene LandmarkWarp(const std::string& data)
   warped->SetTargetLandmarks(targets);
   warped->Update();
   Scene scene;
-  scene.Meshes = { warp.Mesh, truth, splined->GetOutput(), warped->GetOutput() };
+  scene.Meshes = { warp.Mesh, truth, splined->GetOutput(), warped->GetPolyDataOutput() };
   scene.ViewDirection[0] = 0.0, scene.ViewDirection[1] = -1.0, scene.ViewDirection[2] = 0.0;
   scene.ViewUp[0] = 0.0, scene.ViewUp[1] = 0.0, scene.ViewUp[2] = 1.0;
+  return scene;
+}
+
+// The cells of `grid` behind the plane through `origin` with `normal`, as a surface coloured
+// by the cell array ScaledJacobian.
+vtkSmartPointer<vtkPolyData> ClippedByQuality(vtkUnstructuredGrid* grid, const double origin[3],
+  const double normal[3])
+{
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(origin);
+  plane->SetNormal(normal);
+  vtkNew<vtkExtractGeometry> clip;
+  clip->SetInputData(grid);
+  clip->SetImplicitFunction(plane);
+  clip->ExtractInsideOn();
+  clip->ExtractBoundaryCellsOn();
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputConnection(clip->GetOutputPort());
+  surface->Update();
+  auto clipped = vtkSmartPointer<vtkPolyData>::New();
+  clipped->DeepCopy(surface->GetOutput());
+  clipped->GetPointData()->SetScalars(nullptr);
+  clipped->GetCellData()->SetActiveScalars("ScaledJacobian");
+  return clipped;
+}
+
+Scene VolumeClip(const std::string& data)
+{
+  std::string error;
+  vtkSmartPointer<vtkUnstructuredGrid> spot = VolumeMeshes::Tetrahedralize(
+    data + "/spot.obj", LAPLACIAN_EDITING_TEMPORARY_DIR, "spot", "pq1.4a0.0005", error);
+  if (!spot)
+  {
+    std::cerr << error << "\n";
+    return Scene();
+  }
+  const VolumeMeshes::Edit edit = VolumeMeshes::FarEdit(spot, 90.0, 0.1);
+  vtkNew<vtkLaplacianVolumeDeformationFilter> volume;
+  volume->SetInputData(spot);
+  volume->SetRadiusUnitsToDiagonalFraction();
+  volume->SetHandleCenter(edit.Center);
+  volume->SetHandleRadius(0.03);
+  volume->SetROIRadius(0.3);
+  volume->SetRotationModeToAsRigidAsPossible();
+  volume->SetHandleTransform(edit.At(0.0));
+  volume->Update();
+  auto rest = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  rest->DeepCopy(volume->GetOutput()); // with its ScaledJacobian at rest
+  volume->SetHandleTransform(edit.At(1.0));
+  volume->Update();
+  const double* center = spot->GetCenter();
+  Scene scene;
+  scene.Meshes = { ClippedByQuality(rest, center, edit.Axis),
+    ClippedByQuality(volume->GetOutput(), center, edit.Axis) };
+  for (int k = 0; k < 3; ++k)
+  {
+    scene.ViewDirection[k] = edit.Axis[k];
+    scene.ViewUp[k] = edit.Swing[k];
+  }
   return scene;
 }
 
@@ -260,7 +330,7 @@ int main(int argc, char* argv[])
   const std::map<std::string, std::function<Scene(const std::string&)>> cases = {
     { "BumpyPlaneEdit", BumpyPlaneEdit }, { "Fig6Rotations", Fig6Rotations },
     { "Fig3Orders", Fig3Orders }, { "BunnyModes", BunnyModes }, { "CactusModes", CactusModes },
-    { "TwistModes", TwistModes }, { "LandmarkWarp", LandmarkWarp }
+    { "TwistModes", TwistModes }, { "LandmarkWarp", LandmarkWarp }, { "VolumeClip", VolumeClip }
   };
   if (argc < 3 || !cases.count(argv[1]))
   {

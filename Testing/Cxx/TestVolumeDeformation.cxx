@@ -4,6 +4,7 @@
 #include "FilterTestHelpers.h"
 #include "VolumeMeshes.h"
 
+#include "vtkLaplacianLandmarkWarp.h"
 #include "vtkLaplacianVolumeDeformationFilter.h"
 
 #include "vtkCellData.h"
@@ -503,3 +504,41 @@ INSTANTIATE_TEST_SUITE_P(BadInput, VolumeErrors,
     BadGrid{ "NonManifold", &CubesSharingAnEdge, "not manifold" },
     BadGrid{ "NaN", &NaNPoint, "NaN" }),
   [](const ::testing::TestParamInfo<BadGrid>& info) { return std::string(info.param.Name); });
+
+TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
+{
+  // Landmarks on the beam's boundary: the end x = 8 lifted by 1.5, the end x = 0 held.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkNew<vtkPoints> sources, targets;
+  for (double y : { 0.0, 1.0 })
+  {
+    for (double z : { 0.0, 1.0 })
+    {
+      sources->InsertNextPoint(8.0, y, z);
+      targets->InsertNextPoint(8.0, y, z + 1.5);
+      sources->InsertNextPoint(0.0, y, z);
+      targets->InsertNextPoint(0.0, y, z);
+    }
+  }
+  vtkNew<vtkLaplacianLandmarkWarp> warp;
+  warp->SetInputData(beam);
+  warp->SetSourceLandmarks(sources);
+  warp->SetTargetLandmarks(targets);
+  warp->Update();
+  auto* output = vtkUnstructuredGrid::SafeDownCast(warp->GetOutput());
+  ASSERT_NE(output, nullptr);
+  EXPECT_LT(warp->GetMaximumLandmarkDistance(), 1e-6 * beam->GetLength());
+  EXPECT_NE(output->GetFieldData()->GetArray("LandmarkDistance"), nullptr);
+  EXPECT_NE(output->GetCellData()->GetArray("ScaledJacobian"), nullptr);
+  EXPECT_EQ(output->GetCellData()->GetArray("Material"), beam->GetCellData()->GetArray("Material"));
+  EXPECT_EQ(VolumeMeshes::Measure(output).Inverted, 0);
+  // The interior follows: the beam's centre line at x = 6 rises with the boundary around it.
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    const double* p = beam->GetPoint(i);
+    if (p[0] == 6.0 && p[1] == 0.4 && p[2] == 0.4)
+    {
+      EXPECT_GT(output->GetPoint(i)[2] - p[2], 0.2) << "interior point " << i;
+    }
+  }
+}
