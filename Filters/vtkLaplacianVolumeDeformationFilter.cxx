@@ -14,6 +14,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSelection.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -25,7 +26,7 @@ vtkStandardNewMacro(vtkLaplacianVolumeDeformationFilter);
 
 struct vtkLaplacianVolumeDeformationFilter::vtkInternals
 {
-  vtkNew<vtkLaplacianDeformationFilter> Surface;
+  vtkSmartPointer<vtkLaplacianDeformationFilter> Surface;
   lep::RestShape Rest;
   lep::VolumeFollower Follower;
   vtkNew<vtkCallbackCommand> CommitObserver;
@@ -53,8 +54,9 @@ vtkLaplacianVolumeDeformationFilter::vtkLaplacianVolumeDeformationFilter()
       filter->SurfaceCommitUndone();
     }
   });
-  this->Internals->Surface->AddObserver(vtkLaplacianDeformationFilter::EditCommittedEvent, observer);
-  this->Internals->Surface->AddObserver(vtkLaplacianDeformationFilter::CommitUndoneEvent, observer);
+  auto surface = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
+  surface->SetRotationModeToAsRigidAsPossible(); // a volume's boundary keeps its details best so
+  this->SetSurfaceFilter(surface);
 }
 
 vtkLaplacianVolumeDeformationFilter::~vtkLaplacianVolumeDeformationFilter()
@@ -65,6 +67,24 @@ vtkLaplacianVolumeDeformationFilter::~vtkLaplacianVolumeDeformationFilter()
 vtkLaplacianDeformationFilter* vtkLaplacianVolumeDeformationFilter::GetSurfaceFilter()
 {
   return this->Internals->Surface;
+}
+
+void vtkLaplacianVolumeDeformationFilter::SetSurfaceFilter(vtkLaplacianDeformationFilter* surface)
+{
+  vtkInternals& internals = *this->Internals;
+  if (!surface || surface == internals.Surface)
+  {
+    return;
+  }
+  if (internals.Surface)
+  {
+    internals.Surface->RemoveObserver(internals.CommitObserver);
+  }
+  internals.Surface = surface;
+  surface->AddObserver(vtkLaplacianDeformationFilter::EditCommittedEvent, internals.CommitObserver);
+  surface->AddObserver(vtkLaplacianDeformationFilter::CommitUndoneEvent, internals.CommitObserver);
+  internals.ArrayTime = 0;
+  this->Modified();
 }
 
 int vtkLaplacianVolumeDeformationFilter::FillInputPortInformation(int port, vtkInformation* info)
@@ -90,6 +110,16 @@ int vtkLaplacianVolumeDeformationFilter::RequestData(
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector);
   this->SetErrorCode(vtkErrorCode::NoError);
   output->ShallowCopy(input);
+  // One piece of a distributed mesh would take the faces between pieces for its boundary.
+  const int pieces = outputVector->GetInformationObject(0)->Get(
+    vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (pieces > 1)
+  {
+    vtkErrorMacro(<< "The volume edit needs the whole mesh and was asked for one of " << pieces
+                  << " pieces; run it in a serial session (the built-in server, or one process).");
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return 1;
+  }
   if (!this->Edit(input, output))
   {
     this->SetErrorCode(vtkErrorCode::UserError);
@@ -291,6 +321,14 @@ void vtkLaplacianVolumeDeformationFilter::SetHandleGroupMotion(vtkIdType group,
 {
   this->Internals->Surface->SetHandleGroupMotion(
     group, translationX, translationY, translationZ, rotationX, rotationY, rotationZ);
+}
+void vtkLaplacianVolumeDeformationFilter::RemoveAllHandleGroupMotions()
+{
+  this->Internals->Surface->RemoveAllHandleGroupMotions();
+}
+int vtkLaplacianVolumeDeformationFilter::GetNumberOfHandleGroups()
+{
+  return this->Internals->Surface->GetNumberOfHandleGroups();
 }
 void vtkLaplacianVolumeDeformationFilter::SetHandleRadius(double radius)
 {

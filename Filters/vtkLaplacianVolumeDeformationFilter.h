@@ -7,7 +7,7 @@
  * vtkLaplacianDeformationFilter edit of the grid's boundary surface (GetSurfaceFilter()): the
  * handle, the region and every mode and solver property are that filter's, with the same names
  * and meanings, and the boundary's point ids are the grid's. The commonly set ones are forwarded
- * here. The interior near the edited region then follows, without inverting a cell: it minimizes
+ * here. Its RotationMode starts as rigid as possible. The interior near the edited region then follows, without inverting a cell: it minimizes
  * a distortion energy that no inverted or flat cell can have, each step stopped short of the
  * first cell that would flatten (Documentation/volumes.md says why this method). Points farther
  * than the region's radius from the region keep their coordinates exactly.
@@ -52,6 +52,12 @@ public:
    * region; pair handle widgets with it. Its input is the filter's business.
    */
   vtkLaplacianDeformationFilter* GetSurfaceFilter();
+  /**
+   * Edits the boundary with `surface` instead (ParaView's proxy hands in its own, whose
+   * properties its panel shows). Its input, its commit events and its array selection become
+   * the volume filter's business.
+   */
+  void SetSurfaceFilter(vtkLaplacianDeformationFilter* surface);
 
   /**
    * @name Handle and region
@@ -72,6 +78,8 @@ public:
   vtkLinearTransform* GetHandleTransform(int group = 0);
   void SetHandleGroupMotion(vtkIdType group, double translationX, double translationY,
     double translationZ, double rotationX, double rotationY, double rotationZ);
+  void RemoveAllHandleGroupMotions();
+  int GetNumberOfHandleGroups();
   void SetHandleRadius(double radius);
   double GetHandleRadius();
   void SetROIRadius(double radius);
@@ -117,6 +125,7 @@ public:
   /** Go back one commit (the surface filter's too); false if there is none. */
   bool UndoCommit();
   int GetNumberOfCommits();
+
   ///@}
 
   /**

@@ -21,7 +21,7 @@ constexpr int MaximumHalvings = 40;
 constexpr double Momentum = (1.0 - 0.1) / (1.0 + 0.1);
 // The continuation's first pull (as stiff as the mesh around a point) and its growth a stage.
 constexpr double FirstWeight = 1.0;
-constexpr double ContinuationRatio = 10.0;
+constexpr double ContinuationRatio = 100.0;
 // Continuations at most in one solve.
 constexpr int Rounds = 2;
 // The earlier stages only bring the points near: they stop at this relative decrease.
@@ -279,6 +279,7 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
       this->PointTets[fill[tetrahedra(c, i)]++] = c;
     }
   }
+  this->Factor = SparseCholesky();
   this->Factor.SetManySolves(true);
   this->FactoredWeight = 0.0;
   return this->FactorAt(targetWeight);
@@ -309,7 +310,10 @@ std::string InjectiveDeformation::FactorAt(double weight)
       values[this->PullSlots[u]] += 2.0 * weight * this->Pull[this->Unknowns[u]];
     }
   }
-  const std::string error = this->Factor.Factorize(this->Proxy, this->Backend);
+  // The pattern stays: after the first, a factorization reuses the analysis.
+  const std::string error = this->Factor.IsFactorized()
+    ? this->Factor.Refactorize(this->Proxy)
+    : this->Factor.Factorize(this->Proxy, this->Backend, FillOrdering::METIS);
   this->FactoredWeight = error.empty() ? weight : 0.0;
   return error;
 }
@@ -603,7 +607,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
       }
       previous = points;
       points = trial;
-      if (lastAlpha < StallStep)
+      if (options.Reweight && lastAlpha < StallStep)
       {
         // A cell about to flatten stopped the step: the proxy stiffens the cells as the
         // energy's curvature has, and is factored again.

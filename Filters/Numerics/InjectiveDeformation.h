@@ -48,6 +48,9 @@ struct InjectiveOptions
   /// Tighten the targets' pull in stages, from as stiff as the mesh up to the weight given to
   /// Prepare (a start far from the targets); false: at that weight only (a drag step).
   bool Continuation = true;
+  /// Where a step stalls at a flattening cell, weight the proxy by the energy's curvature there
+  /// and factor it again (false: a drag step, which must not pay a factorization).
+  bool Reweight = true;
 };
 
 struct InjectiveReport

@@ -18,6 +18,9 @@ struct SparseCholesky::Backend
 {
   virtual ~Backend() = default;
   virtual Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const = 0;
+  // New values in the analysed pattern; false if they are not positive definite or the backend
+  // cannot (a distributed factor).
+  virtual bool Refactor(const SparseMatrix&) { return false; }
 };
 
 namespace
@@ -29,6 +32,11 @@ struct EigenBackend : SparseCholesky::Backend
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor&) const override
   {
     return this->Factor.solve(rhs);
+  }
+  bool Refactor(const SparseMatrix& matrix) override
+  {
+    this->Factor.factorize(matrix);
+    return this->Factor.info() == Eigen::Success;
   }
 };
 }
@@ -70,6 +78,7 @@ struct CholmodBackend : SparseCholesky::Backend
   {
     return this->Factor.Solve(rhs, loop);
   }
+  bool Refactor(const SparseMatrix& matrix) override { return this->Factor.Factorize(matrix); }
 };
 
 std::unique_ptr<SparseCholesky::Backend> FactorWithCholmod(const SparseMatrix& matrix,
@@ -198,6 +207,19 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
   this->FactorBytes = report.FactorBytes;
   this->ParallelShare = report.ParallelShare;
   return report.Error;
+}
+
+std::string SparseCholesky::Refactorize(const SparseMatrix& matrix)
+{
+  const Stopwatch watch;
+  const bool factored = this->Impl && !this->Distributed && this->Impl->Refactor(matrix);
+  this->FactorizationSeconds = watch.Seconds();
+  if (!factored)
+  {
+    this->Impl.reset();
+    return NotPositiveDefinite;
+  }
+  return {};
 }
 
 Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const

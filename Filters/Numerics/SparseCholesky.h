@@ -56,6 +56,11 @@ public:
     FillOrdering ordering = FillOrdering::Automatic, double maximumBytes = 0.0, int blockSize = 1,
     DistributedSolver* distributed = nullptr);
 
+  /// Factors new values of the matrix last factored, in the same pattern, reusing its analysis
+  /// (the ordering and the symbolic factor). Returns an error, empty on success; the factor is
+  /// then gone, as it is for a distributed one, which this cannot refactor.
+  std::string Refactorize(const Eigen::SparseMatrix<double>& matrix);
+
   /// Whether the next factors are solved many times each (ARAP's global step every
   /// iteration): CHOLMOD's factors then trade a slower factorization for faster solves
   /// (CholmodFactor::SetManySolves).

@@ -171,6 +171,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   InjectiveOptions options;
   options.MaximumIterations = settings.Dragging ? settings.DragIterations : settings.Iterations;
   options.Continuation = !settings.Dragging; // a drag step starts near its targets
+  options.Reweight = !settings.Dragging;
   const Stopwatch watch;
   for (;;)
   {

@@ -31,6 +31,7 @@
 #include <QPushButton>
 
 #include <algorithm>
+#include <cstring>
 #include <utility>
 
 struct pqDeformationHandlePropertyWidget::GroupHandle
@@ -461,7 +462,11 @@ void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
   // The sub-proxies, through properties they expose (GetSubProxy is protected).
   vtkSMProxy* preview = widget ? widget->GetProperty("Previewing")->GetParent() : nullptr;
   vtkSMProxy* representation = widget ? widget->GetProperty("Translation")->GetParent() : nullptr;
-  if (!preview || !representation || !server || server->isRenderServerSeparate() ||
+  // A volume's drag updates the pipeline: its clips and slices show the interior follow, which
+  // a preview of the boundary would hide.
+  const bool volume =
+    std::strcmp(filter->GetVTKClassName(), "vtkLaplacianVolumeDeformationFilter") == 0;
+  if (!preview || !representation || !server || server->isRenderServerSeparate() || volume ||
     connect == this->PreviewConnected)
   {
     return;
