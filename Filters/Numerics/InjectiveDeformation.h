@@ -14,7 +14,10 @@
 // corner tetrahedron would flatten (the smallest positive root of the cubic det(D + t P), after
 // Smith and Schaefer, "Bijective Parameterization with Free Boundaries", SIGGRAPH 2015) and
 // shortened until the energy falls enough, so a start without inverted tetrahedra never gets one:
-// a target that no valid mesh can reach is left short of it.
+// a target that no valid mesh can reach is left short of it. Two things keep the steps long: the
+// pull tightens in stages (lambda from 1 to its final value), and where a step stalls at a
+// flattening tetrahedron, the proxy is weighted by the energy's curvature there and factored
+// again in the same pattern.
 #ifndef LaplacianEditing_InjectiveDeformation_h
 #define LaplacianEditing_InjectiveDeformation_h
 
