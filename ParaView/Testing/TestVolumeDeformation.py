@@ -6,16 +6,16 @@ clip coloured by ScaledJacobian shows it.
 import sys
 
 from paraview import servermanager
-from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, LaplacianVolumeDeformation,
-                             LoadPlugin, MeshQuality, ResetCamera, SaveScreenshot, Show,
-                             Tetrahedralize, Wavelet)
+import paraview.simple as simple
+from paraview.simple import (Clip, ColorBy, GetActiveViewOrCreate, LoadPlugin, MeshQuality,
+                             ResetCamera, SaveScreenshot, Show, Tetrahedralize, Wavelet)
 
 LoadPlugin(sys.argv[1], remote=False)
 failures = []
 
 # A bar of 20 x 4 x 4 cubes cut in tetrahedra; its end x = 20 turned down and lifted.
 bar = Tetrahedralize(Input=Wavelet(WholeExtent=[0, 20, 0, 4, 0, 4]))
-volume = LaplacianVolumeDeformation(Input=bar)
+volume = simple.LaplacianVolumeDeformation(Input=bar)  # the plugin's, once loaded
 volume.HandleCenter = [20, 2, 2]
 volume.HandleRadius = 1.5
 volume.ROIRadius = 10
@@ -61,8 +61,12 @@ view.CameraViewUp = [0, 0, 1]
 ResetCamera(view)
 SaveScreenshot(sys.argv[2], view)
 
+volume.UpdatePropertyInformation()
+zone = volume.GetPropertyValue("NumberOfZonePoints")
+if not zone > 0:
+    failures.append("no zone reported")
 print(f"{moved} points moved, {interior} inside; smallest scaled Jacobian {smallest:.3f}; "
-      f"{volume.GetPropertyValue('NumberOfZonePoints')} zone points")
+      f"{zone} zone points")
 if failures:
     print("FAILED: " + "; ".join(failures))
     sys.exit(1)
