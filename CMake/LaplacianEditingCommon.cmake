@@ -24,7 +24,7 @@ function (laplacian_editing_stage_modules module_files_variable)
   set(module_files)
   foreach (module IN ITEMS "Filters:vtk.module:Filters/CMakeLists.txt"
       "FiltersParallel:Filters/Parallel/vtk.module:Filters/Parallel/CMakeLists.txt"
-      "Widgets:Widgets/vtk.module:Widgets/CMakeLists.txt")
+      "Widgets:Widgets/vtk.module:Widgets/CMakeLists.txt" "IO:IO/vtk.module:IO/CMakeLists.txt")
     string(REPLACE ":" ";" parts "${module}")
     list(GET parts 0 name)
     list(GET parts 1 module_file)

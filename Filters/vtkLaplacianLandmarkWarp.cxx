@@ -5,12 +5,14 @@
 #include "VolumeFollower.h"
 #include "SparseCholesky.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -19,6 +21,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <vector>
 #include <sstream>
 
 namespace le = LaplacianEditing;
@@ -59,6 +63,9 @@ struct vtkLaplacianLandmarkWarp::vtkInternals
   lep::LandmarkSource Source;
   lep::EditPipeline Pipeline;
   vtkNew<vtkPoints> PortTargets;
+  // Ports 1 and 2's landmarks, paired.
+  vtkNew<vtkPoints> PairedSources;
+  vtkNew<vtkPoints> PairedTargets;
   // A volume mesh's: its interior, and its boundary surface as warped.
   lep::VolumeFollower Volume;
   vtkNew<vtkPolyData> WarpedBoundary;
@@ -71,7 +78,7 @@ vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
   {
     this->Solver = SOLVER_SIMPLICIAL_LDLT;
   }
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
   this->Internals->Volume.SetFilter(this);
 }
@@ -87,9 +94,14 @@ void vtkLaplacianLandmarkWarp::SetLandmarksData(vtkDataObject* landmarks)
   this->SetInputData(1, landmarks);
 }
 
+void vtkLaplacianLandmarkWarp::SetTargetLandmarksData(vtkDataObject* targets)
+{
+  this->SetInputData(2, targets);
+}
+
 int vtkLaplacianLandmarkWarp::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 1)
+  if (port > 0)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -212,7 +224,22 @@ bool vtkLaplacianLandmarkWarp::FollowBoundary(vtkPolyData* warpedBoundary, vtkUn
 bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& targets)
 {
   lep::EditPipeline& pipeline = this->Internals->Pipeline;
-  if (auto* landmarks = vtkPointSet::SafeDownCast(this->GetInputDataObject(1, 0)))
+  auto* pairedTargets = vtkPointSet::SafeDownCast(this->GetInputDataObject(2, 0));
+  if (auto* landmarks = vtkPointSet::SafeDownCast(this->GetInputDataObject(1, 0)); pairedTargets)
+  {
+    if (!landmarks)
+    {
+      return pipeline.Check("Target landmarks on input port 2 need the source landmarks on input "
+                            "port 1.");
+    }
+    if (!this->PairLandmarks(landmarks, pairedTargets))
+    {
+      return false;
+    }
+    sources = this->Internals->PairedSources;
+    targets = this->Internals->PairedTargets;
+  }
+  else if (landmarks)
   {
     // Port 1: its points, and the targets' array.
     sources = landmarks->GetPoints();
@@ -244,6 +271,86 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
     return pipeline.Check(message.str());
   }
   this->NumberOfLandmarks = static_cast<int>(sources->GetNumberOfPoints());
+  return true;
+}
+
+bool vtkLaplacianLandmarkWarp::PairLandmarks(vtkPointSet* sources, vtkPointSet* targets)
+{
+  lep::EditPipeline& pipeline = this->Internals->Pipeline;
+  vtkPoints* pairedSources = this->Internals->PairedSources;
+  vtkPoints* pairedTargets = this->Internals->PairedTargets;
+  pairedSources->Reset();
+  pairedTargets->Reset();
+  vtkAbstractArray* sourceLabels = sources->GetPointData()->GetAbstractArray("Label");
+  vtkAbstractArray* targetLabels = targets->GetPointData()->GetAbstractArray("Label");
+  if (!sourceLabels || !targetLabels)
+  {
+    if (sources->GetNumberOfPoints() != targets->GetNumberOfPoints())
+    {
+      return pipeline.Check("There are " + std::to_string(sources->GetNumberOfPoints()) +
+        " source landmarks and " + std::to_string(targets->GetNumberOfPoints()) +
+        " targets, without Label arrays to pair them by: give each source landmark one target.");
+    }
+    for (vtkIdType i = 0; i < sources->GetNumberOfPoints(); ++i)
+    {
+      pairedSources->InsertNextPoint(sources->GetPoint(i));
+      pairedTargets->InsertNextPoint(targets->GetPoint(i));
+    }
+    return true;
+  }
+  // Each label once on each side, and on both.
+  auto index = [](vtkAbstractArray* labels, std::map<std::string, vtkIdType>& ids, std::string& twice) {
+    for (vtkIdType i = 0; i < labels->GetNumberOfValues(); ++i)
+    {
+      const std::string label = labels->GetVariantValue(i).ToString();
+      if (!ids.emplace(label, i).second && twice.empty())
+      {
+        twice = label;
+      }
+    }
+  };
+  std::map<std::string, vtkIdType> fromSource, fromTarget;
+  std::string twice;
+  index(sourceLabels, fromSource, twice);
+  index(targetLabels, fromTarget, twice);
+  if (!twice.empty())
+  {
+    return pipeline.Check("The landmark label \"" + twice +
+      "\" appears twice on one side: each label names one landmark of the sources and one of "
+      "the targets.");
+  }
+  std::vector<std::string> unpaired;
+  for (const auto& [label, id] : fromSource)
+  {
+    if (!fromTarget.count(label))
+    {
+      unpaired.push_back(label + " (sources only)");
+    }
+  }
+  for (const auto& [label, id] : fromTarget)
+  {
+    if (!fromSource.count(label))
+    {
+      unpaired.push_back(label + " (targets only)");
+    }
+  }
+  if (!unpaired.empty())
+  {
+    std::string list;
+    for (std::size_t k = 0; k < unpaired.size() && k < 5; ++k)
+    {
+      list += (k ? ", " : "") + unpaired[k];
+    }
+    return pipeline.Check(std::to_string(unpaired.size()) +
+      " landmark labels are on one side only: " + list + (unpaired.size() > 5 ? ", ..." : "") +
+      ". Pair every source label with a target label.");
+  }
+  for (vtkIdType i = 0; i < sourceLabels->GetNumberOfValues(); ++i)
+  {
+    pairedSources->InsertNextPoint(sources->GetPoint(i));
+    pairedTargets->InsertNextPoint(
+      targets->GetPoint(fromTarget.at(sourceLabels->GetVariantValue(i).ToString())));
+  }
   return true;
 }
 

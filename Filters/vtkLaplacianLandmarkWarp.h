@@ -20,7 +20,9 @@
  * The landmarks come either as two vtkPoints, or as a point set on input port 1
  * (SetLandmarksConnection): its points are the sources and a three-component point array, by
  * default "Target" (SetInputArrayToProcess(0, 1, 0, POINTS, name)), the targets. The port takes
- * precedence. ParaView's "Laplacian Landmark Warp" filter uses the port.
+ * precedence. Or the targets come as a point set of their own on port 2, paired with port 1's
+ * points by label (SetTargetLandmarksConnection): 3D Slicer's files, read by
+ * vtkLaplacianMarkupsReader. ParaView's "Laplacian Landmark Warp" filter uses the ports.
  *
  * A volume mesh (a vtkUnstructuredGrid of linear 3D cells) warps the same way: the landmarks
  * are bound to its boundary surface, and the interior near the warped part follows without
@@ -45,6 +47,7 @@
 
 class vtkAlgorithmOutput;
 class vtkPoints;
+class vtkPointSet;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 namespace LaplacianEditing
@@ -103,6 +106,16 @@ public:
    */
   void SetLandmarksConnection(vtkAlgorithmOutput* landmarks) { this->SetInputConnection(1, landmarks); }
   void SetLandmarksData(vtkDataObject* landmarks);
+
+  /**
+   * The targets as a point set of their own on input port 2 (a template's landmarks on port 1,
+   * a subject's here, both read from Slicer's files by vtkLaplacianMarkupsReader): port 1's
+   * points are then the sources. Where both point sets have a "Label" point array, landmarks
+   * are paired by label, and a label on one side only or twice on one side is an error;
+   * otherwise they are paired in order, the same number on each side.
+   */
+  void SetTargetLandmarksConnection(vtkAlgorithmOutput* targets) { this->SetInputConnection(2, targets); }
+  void SetTargetLandmarksData(vtkDataObject* targets);
 
   /**
    * Binding, in fractions of the input's diagonal: a landmark farther than BindingTolerance
@@ -240,9 +253,11 @@ private:
   vtkLaplacianLandmarkWarp(const vtkLaplacianLandmarkWarp&) = delete;
   void operator=(const vtkLaplacianLandmarkWarp&) = delete;
 
-  // The landmarks of port 1 or the vtkPoints; false, with the error reported, if they are not
-  // usable.
+  // The landmarks of ports 1 and 2 or the vtkPoints; false, with the error reported, if they
+  // are not usable.
   bool FindLandmarks(vtkPoints*& sources, vtkPoints*& targets);
+  // Ports 1 and 2's points paired by label, or in order.
+  bool PairLandmarks(vtkPointSet* sources, vtkPointSet* targets);
   LaplacianEditing::Pipeline::SolverSettings Settings(double diagonal) const;
   // After a solve: the warning for an exact fit that missed, and the landmarks' misses.
   void ReportFit(vtkPolyData* output, vtkPoints* targets);
