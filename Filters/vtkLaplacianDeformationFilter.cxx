@@ -236,7 +236,7 @@ void vtkLaplacianDeformationFilter::EditSurface(vtkPolyData* input, vtkPolyData*
   std::copy_n(this->HandleRotation, 3, internals.Source.Rotation);
   std::copy_n(this->HandleTranslation, 3, internals.Source.Translation);
   if (internals.Pipeline.Run(rest, output, internals.Source, this->Settings(),
-        this->MergeCoincidentPoints != 0, this->GenerateEditRoles != 0, this->RoleColors != 0))
+        this->MergeCoincidentPoints != 0, this->Outputs()))
   {
     internals.EditTime.Modified();
   }
@@ -295,6 +295,15 @@ lep::SolverSettings vtkLaplacianDeformationFilter::Settings()
   return settings;
 }
 
+lep::OutputOptions vtkLaplacianDeformationFilter::Outputs() const
+{
+  lep::OutputOptions options;
+  options.Roles = this->GenerateEditRoles != 0;
+  options.RoleColors = this->RoleColors != 0;
+  options.Displacement = this->OutputDisplacement != 0;
+  return options;
+}
+
 bool vtkLaplacianDeformationFilter::CheckInput(vtkPolyData* input)
 {
   lep::EditPipeline& pipeline = this->Internals->Pipeline;
@@ -331,7 +340,7 @@ void vtkLaplacianDeformationFilter::WriteEdit(
   vtkPolyData* rest, vtkPolyData* output, const lep::OutputEdit* edit)
 {
   this->Internals->Pipeline.Write(
-    rest, output, edit, this->GenerateEditRoles != 0, this->RoleColors != 0);
+    rest, output, edit, this->Outputs());
 }
 
 const lep::EditPipeline& vtkLaplacianDeformationFilter::GetEditPipeline() const
@@ -581,6 +590,7 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
   os << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
   os << indent << "RoleColors: " << (this->RoleColors ? "On" : "Off") << "\n";
+  os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
 }
 
 void vtkLaplacianDeformationFilter::PrintLastUpdate(ostream& os, vtkIndent next)

@@ -46,6 +46,7 @@ namespace Pipeline
 {
 class EditPipeline;
 struct OutputEdit;
+struct OutputOptions;
 struct RegionParameters;
 struct SolverSettings;
 }
@@ -503,6 +504,14 @@ public:
   vtkBooleanMacro(RoleColors, vtkTypeBool);
 
   /**
+   * Add the Displacement point array, the output's points minus the rest's (three components,
+   * of the points' type), written in place like the points. Default off.
+   */
+  vtkSetMacro(OutputDisplacement, vtkTypeBool);
+  vtkGetMacro(OutputDisplacement, vtkTypeBool);
+  vtkBooleanMacro(OutputDisplacement, vtkTypeBool);
+
+  /**
    * Whole copies of a rest array (points, normals, EditRole) the output has taken since
    * construction. The output's arrays are kept between updates and a handle move rewrites only
    * the tuples of its region in place, so a move adds none, unless the array the output held
@@ -603,7 +612,7 @@ protected:
 
   /**
    * Writes `edit` (null: nothing moved) into `output`, a shallow copy of `rest`, with EditRole
-   * as GenerateEditRoles and RoleColors say.
+   * Displacement as GenerateEditRoles, RoleColors and OutputDisplacement say.
    */
   void WriteEdit(vtkPolyData* rest, vtkPolyData* output,
     const LaplacianEditing::Pipeline::OutputEdit* edit);
@@ -663,13 +672,15 @@ protected:
   vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;
   vtkTypeBool RoleColors = 1;
+  vtkTypeBool OutputDisplacement = 0;
 
 private:
   friend class vtkLaplacianDragPreview;
   friend class vtkLaplacianVolumeDeformationFilter; // runs the boundary's edit, reads its moved points
 
-  // The properties that shape the system and the rotation model.
+  // The properties that shape the system and the rotation model, and the output's arrays.
   LaplacianEditing::Pipeline::SolverSettings Settings();
+  LaplacianEditing::Pipeline::OutputOptions Outputs() const;
   // vtkLaplacianDragPreview's: a drag step of the last update's edit with group 0's motion
   // replaced; false where anything but that motion changed since, or the solve failed. The rest
   // surface it solved on.

@@ -174,7 +174,10 @@ int vtkLaplacianLandmarkWarp::RequestData(
   source.MaximumDistance = this->MaximumBindingDistance * diagonal;
   source.Exact = this->ExactFit != 0;
   source.Weight = this->ExactFit ? ExactFitWeight : this->LandmarkWeight;
-  if (pipeline.Run(surface, warped, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0))
+  lep::OutputOptions outputs;
+  outputs.Displacement = this->OutputDisplacement != 0;
+  if (pipeline.Run(
+        surface, warped, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0, outputs))
   {
     this->ReportFit(warped, targets);
     if (grid && this->FollowBoundary(warped, vtkUnstructuredGrid::SafeDownCast(output)))
@@ -217,7 +220,7 @@ bool vtkLaplacianLandmarkWarp::FollowBoundary(vtkPolyData* warpedBoundary, vtkUn
   {
     vtkWarningMacro(<< warning);
   }
-  volume.Write(output);
+  volume.Write(output, this->OutputDisplacement != 0);
   return true;
 }
 
@@ -447,6 +450,7 @@ void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExactFit: " << (this->ExactFit ? "On" : "Off") << "\n";
   os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
   os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
   os << indent << "RotationMode: " << this->RotationMode << "\n";
   os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
   os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";

@@ -141,6 +141,14 @@ public:
   vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
   vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
   vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
+
+  /**
+   * Add the Displacement point array, the output's points minus the input's (three components),
+   * written in place like the points: what a grid transform samples. Default off.
+   */
+  vtkSetMacro(OutputDisplacement, vtkTypeBool);
+  vtkGetMacro(OutputDisplacement, vtkTypeBool);
+  vtkBooleanMacro(OutputDisplacement, vtkTypeBool);
   ///@}
 
   /**
@@ -283,6 +291,7 @@ private:
   double BindingTolerance = 0.01;
   double MaximumBindingDistance = 0.1;
   vtkTypeBool MergeCoincidentPoints = 1;
+  vtkTypeBool OutputDisplacement = 0;
   int Solver = SOLVER_CHOLMOD;
 
   int NumberOfLandmarks = 0;

@@ -206,7 +206,7 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
     }
   }
   this->UpdateProgress(0.9);
-  internals.Follower.Write(output);
+  internals.Follower.Write(output, this->OutputDisplacement != 0);
   return true;
 }
 
@@ -435,6 +435,7 @@ void vtkLaplacianVolumeDeformationFilter::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "VolumeIterations: " << this->VolumeIterations << "\n";
   os << indent << "DragVolumeIterations: " << this->DragVolumeIterations << "\n";
   os << indent << "NumberOfCommits: " << this->GetNumberOfCommits() << "\n";
+  os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
   const lep::VolumeFollower::Facts& facts = this->Internals->Follower.GetFacts();
   os << indent << "Last update: " << facts.ZonePoints << " zone points, " << facts.ZoneTetrahedra
      << " corner tetrahedra, " << facts.Iterations << " iterations, " << facts.Growths

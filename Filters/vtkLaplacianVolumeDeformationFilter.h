@@ -145,6 +145,14 @@ public:
   ///@}
 
   /**
+   * Add the Displacement point array, the output's points minus the rest's, written in place
+   * like the points. Default off.
+   */
+  vtkSetMacro(OutputDisplacement, vtkTypeBool);
+  vtkGetMacro(OutputDisplacement, vtkTypeBool);
+  vtkBooleanMacro(OutputDisplacement, vtkTypeBool);
+
+  /**
    * @name Results of the last update
    */
   ///@{
@@ -174,6 +182,7 @@ protected:
 
   int VolumeIterations = 300;
   int DragVolumeIterations = 1;
+  vtkTypeBool OutputDisplacement = 0;
 
 private:
   vtkLaplacianVolumeDeformationFilter(const vtkLaplacianVolumeDeformationFilter&) = delete;

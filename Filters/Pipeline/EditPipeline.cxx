@@ -53,7 +53,7 @@ bool EditPipeline::Aborted(double progress)
 }
 
 bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& source,
-  const SolverSettings& settings, bool merge, bool roles, bool colors)
+  const SolverSettings& settings, bool merge, const OutputOptions& options)
 {
   // Progress after each step that may take seconds (graph, region and its factor, rotation
   // model and its factor); the abort flag is read between them.
@@ -75,7 +75,7 @@ bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& sourc
   {
     const Stopwatch watch;
     const OutputEdit edit = this->GetEdit();
-    this->Write(rest, output, &edit, roles, colors);
+    this->Write(rest, output, &edit, options);
     this->LastFacts.SolveTime += watch.Seconds();
   }
   this->Filter->UpdateProgress(1.0);
@@ -222,9 +222,9 @@ bool EditPipeline::SolveDragStep(EditSource& source, SolverSettings settings)
 }
 
 void EditPipeline::Write(
-  vtkPolyData* rest, vtkPolyData* output, const OutputEdit* edit, bool roles, bool colors)
+  vtkPolyData* rest, vtkPolyData* output, const OutputEdit* edit, const OutputOptions& options)
 {
-  this->Writer.Write(rest, output, edit, roles, colors);
+  this->Writer.Write(rest, output, edit, options);
 }
 
 bool EditPipeline::SetDragging(bool dragging)

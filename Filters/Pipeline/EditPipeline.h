@@ -63,11 +63,11 @@ public:
   bool Check(const std::string& error);
 
   /// The edit of `rest` for `source`, each step skipped while its cache holds; then the result
-  /// written into `output`, a shallow copy of `rest` (null: not written), with the EditRole array
-  /// if `roles` is on and its colours if `colors` is. `merge` welds coincident points. Returns
-  /// whether it solved; if not, it reported why, or the filter was aborted.
+  /// written into `output`, a shallow copy of `rest` (null: not written), with the arrays
+  /// `options` asks for. `merge` welds coincident points. Returns whether it solved; if not, it
+  /// reported why, or the filter was aborted.
   bool Run(vtkPolyData* rest, vtkPolyData* output, EditSource& source,
-    const SolverSettings& settings, bool merge, bool roles = false, bool colors = false);
+    const SolverSettings& settings, bool merge, const OutputOptions& options = {});
 
   /// Solves the last Run's edit again for the motions `source` gives now, as one step of a drag
   /// (settings.DragARAPIterations), on the same region and factors: nothing is rebuilt. Returns
@@ -76,7 +76,8 @@ public:
 
   /// Writes `edit` (null: nothing moved) into `output`, a shallow copy of `rest`, in place in the
   /// arrays kept from earlier updates (see OutputWriter).
-  void Write(vtkPolyData* rest, vtkPolyData* output, const OutputEdit* edit, bool roles, bool colors);
+  void Write(vtkPolyData* rest, vtkPolyData* output, const OutputEdit* edit,
+    const OutputOptions& options);
 
   /// A drag starts or ends. After a drag, the next update settles the shape: ARAPIterations in
   /// full, without the convergence test. Returns whether that update must run although no

@@ -40,6 +40,15 @@ struct MovedPoints
   std::vector<signed char> Roles;
 };
 
+/// What a filter's output carries besides its moved points: the EditRole array (and its
+/// colours), and the Displacement array (output minus rest).
+struct OutputOptions
+{
+  bool Roles = false;
+  bool RoleColors = false;
+  bool Displacement = false;
+};
+
 /// One update's edit, as the output writer takes it. Solution rows are in the core's frame
 /// (input = core / Scale + Center); the normals' index (null: no normals to refresh) has each of
 /// its vertices at VertexRest[v], or at the solution's row VertexRows[v] where that is not -1.

@@ -83,7 +83,7 @@ vtkDataArray* RestNormals(vtkDataSetAttributes* attributes)
 }
 
 void OutputWriter::Write(
-  vtkPolyData* rest, vtkPolyData* output, const Edit* edit, bool roles, bool colors)
+  vtkPolyData* rest, vtkPolyData* output, const Edit* edit, const OutputOptions& options)
 {
   static const std::vector<vtkIdType> none;
   const std::uint64_t key = ++this->Writes;
@@ -113,7 +113,12 @@ void OutputWriter::Write(
         normals->WriteCellNormals(array, *edit->VertexRest, *edit->VertexRows, *edit->Solution);
       }));
   }
-  if (!roles)
+  if (options.Displacement)
+  {
+    output->GetPointData()->AddArray(
+      this->Displacement.Update(rest->GetPoints(), output->GetPoints(), moved, key));
+  }
+  if (!options.Roles)
   {
     return;
   }
@@ -122,7 +127,7 @@ void OutputWriter::Write(
   {
     this->RoleColors = NewRoleColors();
   }
-  editRoles->SetLookupTable(colors ? this->RoleColors.Get() : nullptr);
+  editRoles->SetLookupTable(options.RoleColors ? this->RoleColors.Get() : nullptr);
   vtkPointData* pointData = output->GetPointData();
   pointData->AddArray(editRoles);
   if (!pointData->GetScalars())
@@ -184,6 +189,7 @@ void OutputWriter::SetFilter(vtkAlgorithm* filter)
   {
     array->SetPipelineHolders(holders);
   }
+  this->Displacement.SetPipelineHolders(holders);
 }
 
 vtkIdType OutputWriter::GetNumberOfCopies() const

@@ -15,6 +15,7 @@
 #ifndef LaplacianEditing_Pipeline_OutputWriter_h
 #define LaplacianEditing_Pipeline_OutputWriter_h
 
+#include "DisplacementArray.h"
 #include "EditTypes.h"
 #include "OutputArray.h"
 
@@ -39,10 +40,10 @@ public:
   using Edit = OutputEdit;
 
   /// Writes `edit` into `output`, a shallow copy of `rest`; null: nothing moved (the rest
-  /// arrays, and every role fixed). EditRole is added when `roles` is on: the active scalars
-  /// where the output has none, with an indexed lookup table of the paper's Fig. 2 colours when
-  /// `colors` is on.
-  void Write(vtkPolyData* rest, vtkPolyData* output, const Edit* edit, bool roles, bool colors);
+  /// arrays, and every role fixed). With `options`: EditRole, the active scalars where the output
+  /// has none, with an indexed lookup table of the paper's Fig. 2 colours (RoleColors), and
+  /// Displacement.
+  void Write(vtkPolyData* rest, vtkPolyData* output, const Edit* edit, const OutputOptions& options);
 
   /// The filter whose output port 0 the writer writes: references that the outputs of the
   /// filters connected to it hold do not count as sharing.
@@ -64,6 +65,7 @@ private:
   OutputArray PointNormals;
   OutputArray CellNormals;
   OutputArray Roles;
+  DisplacementArray Displacement;
   // EditRole's rest: every point fixed; never written.
   vtkSmartPointer<vtkSignedCharArray> FixedRoles;
   vtkSmartPointer<vtkLookupTable> RoleColors;

@@ -7,6 +7,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
@@ -45,6 +46,7 @@ void VolumeFollower::SetFilter(vtkAlgorithm* filter)
   {
     array->SetPipelineHolders(holders);
   }
+  this->Displacement.SetPipelineHolders(holders);
 }
 
 std::string VolumeFollower::Update(vtkUnstructuredGrid* input, vtkPoints* rest)
@@ -275,7 +277,7 @@ Vector3 VolumeFollower::Position(vtkIdType id) const
              : Vector3(this->Solution.row(row).transpose() + this->Center);
 }
 
-void VolumeFollower::Write(vtkUnstructuredGrid* output)
+void VolumeFollower::Write(vtkUnstructuredGrid* output, bool displacement)
 {
   const std::uint64_t key = ++this->Writes;
   static const std::vector<vtkIdType> none;
@@ -307,6 +309,11 @@ void VolumeFollower::Write(vtkUnstructuredGrid* output)
     });
   output->GetCellData()->AddArray(quality);
   output->GetCellData()->AddArray(failures);
+  if (displacement)
+  {
+    output->GetPointData()->AddArray(
+      this->Displacement.Update(this->Rest, output->GetPoints(), moved, key));
+  }
 }
 }
 }

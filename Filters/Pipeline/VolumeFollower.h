@@ -16,6 +16,7 @@
 #ifndef LaplacianEditing_Pipeline_VolumeFollower_h
 #define LaplacianEditing_Pipeline_VolumeFollower_h
 
+#include "DisplacementArray.h"
 #include "InjectiveDeformation.h"
 #include "OutputArray.h"
 #include "VolumeMesh.h"
@@ -89,8 +90,9 @@ public:
   /// What a filter warns after a settled Follow that left targets unmet; empty if none was.
   std::string FailureWarning() const;
 
-  /// Writes the last Follow into `output`, a shallow copy of the input.
-  void Write(vtkUnstructuredGrid* output);
+  /// Writes the last Follow into `output`, a shallow copy of the input, with the Displacement
+  /// point array if `displacement` is on.
+  void Write(vtkUnstructuredGrid* output, bool displacement = false);
 
   /// The zone's points in grid ids, and their positions after the last Follow.
   const VolumeMesh::Zone& GetZone() const { return this->Zone; }
@@ -122,6 +124,7 @@ private:
   OutputArray Points;
   OutputArray Quality;
   OutputArray Failures;
+  DisplacementArray Displacement;
   vtkSmartPointer<vtkUnsignedCharArray> NoFailures;
   Facts LastFacts;
 };

@@ -382,3 +382,32 @@ TEST(Preview, TheMovingPartIsWhatAnUpdateOfTheSameMotionWrites)
     ExpectSameOutput(filter->GetOutput(), expected, 1e-12);
   }
 }
+
+TEST(Displacement, IsTheOutputMinusTheInputAndOffByDefault)
+{
+  vtkSmartPointer<vtkPolyData> plane = FilterTestHelpers::BumpyPlane();
+  vtkSmartPointer<vtkLaplacianDeformationFilter> filter = FilterTestHelpers::PlaneEdit(plane);
+  filter->SetHandleTranslation(0.0, 0.0, 0.2);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray("Displacement"), nullptr);
+  filter->OutputDisplacementOn();
+  for (double lift : { 0.2, 0.3 }) // the second move rewrites the first's array in place
+  {
+    filter->SetHandleTranslation(0.0, 0.1, lift);
+    filter->Update();
+    vtkPolyData* output = filter->GetOutput();
+    vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+    ASSERT_NE(displacement, nullptr);
+    ASSERT_EQ(displacement->GetNumberOfComponents(), 3);
+    for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      plane->GetPoint(i, p);
+      output->GetPoint(i, q);
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_EQ(displacement->GetComponent(i, k), q[k] - p[k]) << "point " << i;
+      }
+    }
+  }
+}

@@ -465,7 +465,7 @@ TEST(OutputWriter, WritesOnlyTheRegionAndItsRoles)
   lep::NormalRefresher normals;
   normals.Index(grid.Input, grid.Surface);
   const lep::OutputEdit edit = grid.Surface.GetEdit(grid.Solution, &normals, 1);
-  writer.Write(grid.Input, output, &edit, true, false);
+  writer.Write(grid.Input, output, &edit, lep::OutputOptions{ true });
   vtkDataArray* roles = output->GetPointData()->GetArray("EditRole");
   ASSERT_NE(roles, nullptr);
   int handles = 0;
@@ -498,7 +498,7 @@ TEST(OutputWriter, WritesOnlyTheRegionAndItsRoles)
     EXPECT_GT(vtkMath::Dot(a, b), 0.99) << "point " << p;
   }
 
-  writer.Write(grid.Input, output, nullptr, true, false);
+  writer.Write(grid.Input, output, nullptr, lep::OutputOptions{ true });
   EXPECT_EQ(output->GetPoints(), grid.Input->GetPoints()) << "nothing moved: the rest points";
 }
 
@@ -592,7 +592,7 @@ TEST(EditPipeline, RunsASourcesEditAndReportsThroughItsFilter)
   vtkNew<vtkPolyData> output;
   output->ShallowCopy(grid);
   pipeline.BeginUpdate();
-  ASSERT_TRUE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, true));
+  ASSERT_TRUE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, lep::OutputOptions{ true }));
   EXPECT_EQ(code, vtkErrorCode::NoError);
   EXPECT_EQ(source.RegionsSelected, 1);
   EXPECT_EQ(pipeline.GetEditor().GetNumberOfFactorizations(), 1);
@@ -614,14 +614,14 @@ TEST(EditPipeline, RunsASourcesEditAndReportsThroughItsFilter)
   // A move only solves; a source's error is the filter's.
   source.Translation[2] = 0.25;
   pipeline.BeginUpdate();
-  ASSERT_TRUE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, true));
+  ASSERT_TRUE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, lep::OutputOptions{ true }));
   EXPECT_EQ(source.RegionsSelected, 1);
   EXPECT_EQ(pipeline.GetEditor().GetNumberOfFactorizations(), 1);
   EXPECT_EQ(pipeline.GetFacts().SetupTime, 0.0);
   source.Error = "no region today";
   pipeline.BeginUpdate();
   ErrorCatcher errors(filter, vtkCommand::ErrorEvent);
-  EXPECT_FALSE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, true));
+  EXPECT_FALSE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, lep::OutputOptions{ true }));
   EXPECT_NE(errors.Messages.find("no region today"), std::string::npos);
   EXPECT_EQ(code, vtkErrorCode::UserError);
 }

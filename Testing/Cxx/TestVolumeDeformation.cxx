@@ -542,3 +542,41 @@ TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
     }
   }
 }
+
+TEST(VolumeDeformation, DisplacementOfTheVolumeAndOfAWarpedGrid)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  filter->OutputDisplacementOn();
+  filter->SetHandleTranslation(0.0, 0.0, 1.0);
+  filter->Update();
+  vtkNew<vtkLaplacianLandmarkWarp> warp;
+  vtkNew<vtkPoints> sources, targets;
+  sources->InsertNextPoint(8.0, 0.0, 0.0);
+  targets->InsertNextPoint(8.0, 0.0, 0.5);
+  sources->InsertNextPoint(0.0, 0.0, 0.0);
+  targets->InsertNextPoint(0.0, 0.0, 0.0);
+  warp->SetInputData(beam);
+  warp->SetSourceLandmarks(sources);
+  warp->SetTargetLandmarks(targets);
+  warp->OutputDisplacementOn();
+  warp->Update();
+  for (vtkPointSet* output : { static_cast<vtkPointSet*>(filter->GetOutput()), vtkPointSet::SafeDownCast(warp->GetOutput()) })
+  {
+    vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+    ASSERT_NE(displacement, nullptr);
+    double largest = 0.0;
+    for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      beam->GetPoint(i, p);
+      output->GetPoint(i, q);
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_EQ(displacement->GetComponent(i, k), q[k] - p[k]) << "point " << i;
+        largest = std::max(largest, std::abs(q[k] - p[k]));
+      }
+    }
+    EXPECT_GT(largest, 0.4);
+  }
+}
