@@ -174,6 +174,7 @@ int vtkLaplacianLandmarkWarp::RequestData(
   source.MaximumDistance = this->MaximumBindingDistance * diagonal;
   source.Exact = this->ExactFit != 0;
   source.Weight = this->ExactFit ? ExactFitWeight : this->LandmarkWeight;
+  source.FollowUnreferenced = !grid; // a grid's interior follows its own way
   lep::OutputOptions outputs;
   outputs.Displacement = this->OutputDisplacement != 0;
   if (pipeline.Run(

@@ -137,6 +137,10 @@ bool EditPipeline::UpdateRegion(vtkPolyData* rest, EditSource& source, const Sol
   this->LastFacts.SetupTime = watch.Seconds();
   const EditRegion& region = this->Editor.GetRegion();
   this->Surface.IndexRegion(region);
+  if (choice.FollowUnreferenced)
+  {
+    this->Surface.AddFollowers(rest);
+  }
   this->Normals.Index(rest, this->Surface);
   if (status.Work & RebuiltRegion)
   {

@@ -31,6 +31,9 @@ struct RegionChoice
   std::shared_ptr<const std::vector<SurfacePoint>> Points;
   std::uint64_t PointsVersion = 0;
   double PointWeight = 100.0;
+  /// Whether the input's points that no polygon uses move too, each by the displacement of the
+  /// region's point nearest it at rest (as a thin-plate spline moves every point).
+  bool FollowUnreferenced = false;
 };
 
 /// The motions of one update, in the core's frame: one map per handle group and, where the

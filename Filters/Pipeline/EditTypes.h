@@ -32,12 +32,15 @@ struct Reach
   }
 };
 
-/// The output points an edit moves: their ids, their rows of the solution and their roles.
+/// The output points an edit moves: their ids, their rows of the solution and their roles; a
+/// point that follows a row it is not (SurfaceAdapter::AddFollowers) is offset from it by its
+/// Offset, in input coordinates (empty: none does).
 struct MovedPoints
 {
   std::vector<vtkIdType> Ids;
   std::vector<int> Rows;
   std::vector<signed char> Roles;
+  std::vector<Vector3> Offsets;
 };
 
 /// What a filter's output carries besides its moved points: the EditRole array (and its

@@ -17,8 +17,7 @@ std::string LandmarkSource::ChooseRegion(
   bool rebound = false;
   const std::string error =
     this->Binder.Update(this->Sources, surface, this->MaximumDistance, rebound);
-  this->BindingTime =
-    rebound ? watch.Seconds() : 0.0;
+  this->BindingTime = rebound ? watch.Seconds() : 0.0;
   if (!error.empty())
   {
     return error;
@@ -32,6 +31,7 @@ std::string LandmarkSource::ChooseRegion(
   region.Points = this->Binder.GetPoints();
   region.PointsVersion = this->Binder.GetVersion();
   region.PointWeight = this->Weight;
+  region.FollowUnreferenced = this->FollowUnreferenced;
   return {};
 }
 

@@ -32,6 +32,8 @@ public:
   double MaximumDistance = 0.0;
   bool Exact = true;
   double Weight = 1.0;
+  /// Points that no polygon uses move with their nearest warped point (RegionChoice).
+  bool FollowUnreferenced = false;
 
   const LandmarkBinder& GetBinder() const { return this->Binder; }
   /// Seconds the last update spent binding the landmarks (0 when the binding held).

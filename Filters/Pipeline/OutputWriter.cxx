@@ -92,8 +92,12 @@ void OutputWriter::Write(
     vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const le::Vector3 p =
+        le::Vector3 p =
           edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
+        if (!edit->Moved->Offsets.empty())
+        {
+          p += edit->Moved->Offsets[i];
+        }
         points->SetTuple(moved[i], p.data());
       }
     });

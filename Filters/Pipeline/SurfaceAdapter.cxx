@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkStaticPointLocator.h"
 #include "vtkPolyData.h"
 #include "vtkSignedCharArray.h"
 
@@ -482,6 +483,62 @@ void SurfaceAdapter::IndexRegion(const le::EditRegion& region)
       moved.Rows.push_back(k);
       moved.Roles.push_back(static_cast<signed char>(region.Roles[k]));
     }
+  }
+}
+
+void SurfaceAdapter::AddFollowers(vtkPolyData* input)
+{
+  MovedPoints& moved = this->RegionPoints;
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<int> movedIndex(n, -1); // -1: a point no polygon uses; -2: used, not moved
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    std::for_each(ids, ids + size, [&](vtkIdType id) { movedIndex[id] = -2; });
+  });
+  if (moved.Ids.empty() || std::find(movedIndex.begin(), movedIndex.end(), -1) == movedIndex.end())
+  {
+    return;
+  }
+  for (std::size_t k = 0; k < moved.Ids.size(); ++k)
+  {
+    movedIndex[moved.Ids[k]] = static_cast<int>(k);
+  }
+  // Each unused point takes the displacement of the used point nearest it, if the edit moves it.
+  vtkNew<vtkPoints> used;
+  used->SetDataTypeToDouble();
+  std::vector<vtkIdType> usedIds;
+  for (vtkIdType id = 0; id < n; ++id)
+  {
+    if (movedIndex[id] != -1)
+    {
+      used->InsertNextPoint(input->GetPoint(id));
+      usedIds.push_back(id);
+    }
+  }
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(used);
+  vtkNew<vtkStaticPointLocator> locator;
+  locator->SetDataSet(surface);
+  locator->BuildLocator();
+  moved.Offsets.assign(moved.Ids.size(), le::Vector3::Zero());
+  for (vtkIdType id = 0; id < n; ++id)
+  {
+    if (movedIndex[id] != -1)
+    {
+      continue;
+    }
+    double p[3], q[3];
+    input->GetPoint(id, p);
+    const vtkIdType nearest = usedIds[locator->FindClosestPoint(p)];
+    const int k = movedIndex[nearest];
+    if (k < 0)
+    {
+      continue; // nearest to a part the edit leaves
+    }
+    input->GetPoint(nearest, q);
+    moved.Ids.push_back(id);
+    moved.Rows.push_back(moved.Rows[k]);
+    moved.Roles.push_back(moved.Roles[k]);
+    moved.Offsets.emplace_back(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
   }
 }
 

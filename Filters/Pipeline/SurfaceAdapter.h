@@ -88,6 +88,9 @@ public:
   /// Indexes the input points in the region: the points an edit writes, with their rows and roles.
   void IndexRegion(const LaplacianEditing::EditRegion& region);
   const std::vector<int>& GetRowOfVertex() const { return this->RowOfVertex; }
+  /// After IndexRegion: the points of `input` that no polygon uses move with the region's
+  /// point nearest them at rest (RegionChoice::FollowUnreferenced).
+  void AddFollowers(vtkPolyData* input);
   const MovedPoints& GetRegionPoints() const { return this->RegionPoints; }
 
   /// A solution of the indexed region as the output writer takes it, with the normals' index

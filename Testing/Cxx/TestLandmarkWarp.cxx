@@ -426,3 +426,43 @@ TEST(LandmarkWarp, LandmarksATriangleCannotAllMeetWarnAndFitInLeastSquares)
   EXPECT_GT(miss, 1e-3 * Diagonal(bunny));
   EXPECT_LT(miss, 0.01 * Diagonal(bunny));
 }
+
+TEST(LandmarkWarp, PointsNoPolygonUsesFollowTheSurface)
+{
+  // The bunny's 1,113 unused points move as the surface point nearest them does: a translation
+  // of every landmark moves them by it too.
+  auto bunny = Load("stanford-bunny.obj");
+  std::vector<char> used(bunny->GetNumberOfPoints(), 0);
+  vtkIdType count;
+  const vtkIdType* ids;
+  for (bunny->GetPolys()->InitTraversal(); bunny->GetPolys()->GetNextCell(count, ids);)
+  {
+    std::for_each(ids, ids + count, [&](vtkIdType id) { used[id] = 1; });
+  }
+  const auto unused = std::count(used.begin(), used.end(), 0);
+  ASSERT_GT(unused, 1000);
+  const double shift[3] = { 0.01, 0.02, -0.015 };
+  auto sources = SurfacePoints(bunny, 100);
+  auto map = [&](const double* p, double* q) {
+    for (int k = 0; k < 3; ++k)
+    {
+      q[k] = p[k] + shift[k];
+    }
+  };
+  auto warp = Warp(bunny, sources, Moved(sources, map));
+  warp->Update();
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < bunny->GetNumberOfPoints(); ++i)
+  {
+    if (!used[i])
+    {
+      double p[3], q[3];
+      map(bunny->GetPoint(i), p);
+      warp->GetPolyDataOutput()->GetPoint(i, q);
+      worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+    }
+  }
+  std::cout << unused << " unused points, the farthest " << worst / Diagonal(bunny)
+            << " of the diagonal from the translated position\n";
+  EXPECT_LE(worst, 1e-6 * Diagonal(bunny));
+}
