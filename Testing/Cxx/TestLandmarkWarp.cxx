@@ -3,6 +3,7 @@
 // locating each landmark on the input and the output independently), components without
 // landmarks stay, only new targets reuse the factor, and bad landmarks are clear errors.
 #include "FilterTestHelpers.h"
+#include "ImageWarp.h"
 #include "KnownWarps.h"
 
 #include "vtkLaplacianLandmarkWarp.h"
@@ -465,4 +466,33 @@ TEST(LandmarkWarp, PointsNoPolygonUsesFollowTheSurface)
   std::cout << unused << " unused points, the farthest " << worst / Diagonal(bunny)
             << " of the diagonal from the translated position\n";
   EXPECT_LE(worst, 1e-6 * Diagonal(bunny));
+}
+
+TEST(LandmarkWarp, ALabelImageWarpsAsItsSurface)
+{
+  // The inside of spot as a label image, warped through the warp's displacement grid, against
+  // the warped surface voxelized the same way.
+  const KnownWarps::Warp warp = KnownWarps::TurnedHead(DataDir);
+  auto sources = SurfacePoints(warp.Mesh, 300);
+  auto landmarks = Warp(warp.Mesh, sources, Moved(sources, warp.Map));
+  landmarks->OutputDisplacementOn();
+  landmarks->Update();
+  vtkPolyData* warped = landmarks->GetPolyDataOutput();
+  double bounds[6], edited[6];
+  warp.Mesh->GetBounds(bounds);
+  warped->GetBounds(edited);
+  for (int a = 0; a < 3; ++a)
+  {
+    const double margin = 0.05 * warp.Mesh->GetLength();
+    bounds[2 * a] = std::min(bounds[2 * a], edited[2 * a]) - margin;
+    bounds[2 * a + 1] = std::max(bounds[2 * a + 1], edited[2 * a + 1]) + margin;
+  }
+  vtkSmartPointer<vtkImageData> rest = ImageWarp::Voxelize(warp.Mesh, bounds, 80);
+  vtkSmartPointer<vtkImageData> image = ImageWarp::WarpLabels(rest, warped);
+  vtkSmartPointer<vtkImageData> surface = ImageWarp::Voxelize(warped, bounds, 80);
+  const double dice = ImageWarp::Dice(image, surface), before = ImageWarp::Dice(rest, surface);
+  std::cout << "label image warped with the surface: Dice " << dice << " (unwarped " << before
+            << ")\n";
+  EXPECT_GE(dice, 0.95);
+  EXPECT_LT(before, dice);
 }

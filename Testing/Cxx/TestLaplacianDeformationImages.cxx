@@ -13,12 +13,16 @@
 //   TwistModes      the bunny's ear twisted 120 degrees about its axis, in the same modes
 //   LandmarkWarp    the articulated known warp (KnownWarps.h) from 100 landmarks: the rest,
 //                   the true shape, VTK's thin-plate spline and vtkLaplacianLandmarkWarp
+//   LabelImageWarp  spot's head turned by the landmark warp (300 landmarks): the rest, the
+//                   inside of the rest as a label image warped through the warp's displacement
+//                   grid (its boundary, blurred by a voxel to draw), the warped surface
 //   VolumeClip      tetgen's spot, its head turned 90 degrees and lifted by
 //                   vtkLaplacianVolumeDeformationFilter: rest and edited, the cells on one side
 //                   of the plane across the turn, coloured by ScaledJacobian (red 0, blue 1)
 #include "EditingScene.h"
 #include "KnownWarps.h"
 #include "ReferenceEdits.h"
+#include "ImageWarp.h"
 #include "VolumeMeshes.h"
 
 #include "BumpyPlane.h"
@@ -29,6 +33,9 @@
 #include "vtkCellData.h"
 #include "vtkDataSetSurfaceFilter.h"
 #include "vtkExtractGeometry.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkImageCast.h"
+#include "vtkImageGaussianSmooth.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
 
@@ -289,6 +296,44 @@ vtkSmartPointer<vtkPolyData> ClippedByQuality(vtkUnstructuredGrid* grid, const d
   return clipped;
 }
 
+Scene LabelImageWarp(const std::string& data)
+{
+  const KnownWarps::Warp warp = KnownWarps::TurnedHead(data);
+  auto sources = KnownWarps::SurfacePoints(warp.Mesh, 300);
+  vtkNew<vtkLaplacianLandmarkWarp> warped;
+  warped->SetInputData(warp.Mesh);
+  warped->SetSourceLandmarks(sources);
+  warped->SetTargetLandmarks(KnownWarps::Moved(sources, warp.Map));
+  warped->OutputDisplacementOn();
+  warped->Update();
+  double bounds[6];
+  warp.Mesh->GetBounds(bounds);
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] -= 0.2 * warp.Mesh->GetLength();
+    bounds[2 * a + 1] += 0.2 * warp.Mesh->GetLength();
+  }
+  vtkSmartPointer<vtkImageData> labels = ImageWarp::WarpLabels(
+    ImageWarp::Voxelize(warp.Mesh, bounds, 80), warped->GetPolyDataOutput());
+  // The labels' boundary, drawn smooth: the label image blurred by a voxel, cut at one half.
+  vtkNew<vtkImageCast> real;
+  real->SetInputData(labels);
+  real->SetOutputScalarTypeToFloat();
+  vtkNew<vtkImageGaussianSmooth> blur;
+  blur->SetInputConnection(real->GetOutputPort());
+  blur->SetStandardDeviations(1.0, 1.0, 1.0);
+  vtkNew<vtkFlyingEdges3D> boundary;
+  boundary->SetInputConnection(blur->GetOutputPort());
+  boundary->SetValue(0, 0.5);
+  boundary->ComputeScalarsOff();
+  boundary->Update();
+  Scene scene;
+  scene.Meshes = { warp.Mesh, boundary->GetOutput(), warped->GetPolyDataOutput() };
+  scene.ViewDirection[0] = 0.0, scene.ViewDirection[1] = 0.0, scene.ViewDirection[2] = -1.0;
+  scene.ViewUp[0] = 0.0, scene.ViewUp[1] = 1.0, scene.ViewUp[2] = 0.0;
+  return scene;
+}
+
 Scene VolumeClip(const std::string& data)
 {
   std::string error;
@@ -330,7 +375,8 @@ int main(int argc, char* argv[])
   const std::map<std::string, std::function<Scene(const std::string&)>> cases = {
     { "BumpyPlaneEdit", BumpyPlaneEdit }, { "Fig6Rotations", Fig6Rotations },
     { "Fig3Orders", Fig3Orders }, { "BunnyModes", BunnyModes }, { "CactusModes", CactusModes },
-    { "TwistModes", TwistModes }, { "LandmarkWarp", LandmarkWarp }, { "VolumeClip", VolumeClip }
+    { "TwistModes", TwistModes }, { "LandmarkWarp", LandmarkWarp }, { "LabelImageWarp", LabelImageWarp },
+    { "VolumeClip", VolumeClip }
   };
   if (argc < 3 || !cases.count(argv[1]))
   {
