@@ -4,7 +4,7 @@
 //
 //   LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]
 //     [--landmarks 100,300,1000,10000] [--tps-max N] [--tps-basis r2logr,r]
-//     [--modes arap,none,explicit,implicit] [--bending W] [--drags N]
+//     [--modes arap,none,explicit,implicit] [--bending W] [--drags N] [--draws N]
 //
 // Landmarks are random points on the surface (inside triangles), their targets the known
 // motion of them. For each method: the root-mean-square distance of every vertex from the true
@@ -13,7 +13,8 @@
 // to --tps-max landmarks (1000; its time grows with the cube of the count), with VTK's default
 // kernel (r2logr) or the 3D one (r). --bending sets the warp's BendingWeight (its default,
 // 100). After the largest count, --drags (20) updates move one landmark with the factorization
-// reused (Dragging on): the median seconds an update and the factorizations in all.
+// reused (Dragging on): the median seconds an update and the factorizations in all. --draws
+// repeats each count with other random landmarks (seeds 3, 4, ...), each line saying its draw.
 #include "KnownWarps.h"
 
 #include "vtkLaplacianLandmarkWarp.h"
@@ -125,8 +126,8 @@ int ModeNamed(const std::string& name)
   return vtkLaplacianLandmarkWarp::ROTATION_AS_RIGID_AS_POSSIBLE;
 }
 
-void RunThinPlateSpline(
-  const KnownWarps::Warp& warp, vtkPoints* sources, vtkPoints* targets, const std::string& basis)
+void RunThinPlateSpline(const KnownWarps::Warp& warp, vtkPoints* sources, vtkPoints* targets,
+  const std::string& basis, int draw)
 {
   vtkNew<vtkThinPlateSplineTransform> spline;
   if (basis == "r")
@@ -146,11 +147,11 @@ void RunThinPlateSpline(
   transform->Update();
   const double seconds = SecondsSince(start);
   Report(warp, sources->GetNumberOfPoints(), "tps-" + basis, Measure(warp, transform->GetOutput()->GetPoints()),
-    seconds);
+    seconds, ", \"draw\": " + std::to_string(draw));
 }
 
 vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, vtkPoints* sources,
-  vtkPoints* targets, const std::string& mode, double bending)
+  vtkPoints* targets, const std::string& mode, double bending, int draw)
 {
   auto filter = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
   filter->SetInputData(warp.Mesh);
@@ -169,7 +170,8 @@ vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, 
         << ", \"setup_seconds\": " << filter->GetSetupTime()
         << ", \"solve_seconds\": " << filter->GetSolveTime()
         << ", \"arap_iterations\": " << filter->GetNumberOfARAPIterations()
-        << ", \"largest_miss\": " << filter->GetMaximumLandmarkDistance() / warp.Mesh->GetLength();
+        << ", \"largest_miss\": " << filter->GetMaximumLandmarkDistance() / warp.Mesh->GetLength()
+        << ", \"draw\": " << draw;
   Report(warp, sources->GetNumberOfPoints(), mode, Measure(warp, filter->GetPolyDataOutput()->GetPoints()),
     seconds, extra.str());
   return filter;
@@ -211,7 +213,7 @@ int main(int argc, char* argv[])
     std::cout << "usage: LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]\n"
                  "  [--landmarks 100,300,1000,10000] [--tps-max N] "
                  "[--tps-basis r2logr,r] [--modes arap,none,explicit,implicit] [--bending W] "
-                 "[--drags N]\n";
+                 "[--drags N] [--draws N]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string dataDir = argv[1];
@@ -219,6 +221,7 @@ int main(int argc, char* argv[])
   std::vector<std::string> counts = { "100", "300", "1000", "10000" };
   vtkIdType tpsMax = 1000;
   int drags = 20;
+  int draws = 1;
   double bending = -1.0; // the filter's default
   for (int a = 2; a + 1 < argc; a += 2)
   {
@@ -251,6 +254,10 @@ int main(int argc, char* argv[])
     {
       drags = std::stoi(value);
     }
+    else if (option == "--draws")
+    {
+      draws = std::stoi(value);
+    }
     else
     {
       std::cerr << "unknown option " << option << "\n";
@@ -272,20 +279,23 @@ int main(int argc, char* argv[])
     vtkSmartPointer<vtkPoints> lastTargets;
     for (const auto& count : counts)
     {
-      const vtkIdType landmarks = std::stoll(count);
-      auto sources = KnownWarps::SurfacePoints(warp.Mesh, landmarks);
-      auto targets = KnownWarps::Moved(sources, warp.Map);
-      if (landmarks <= tpsMax)
+      for (int draw = 0; draw < draws; ++draw)
       {
-        for (const auto& basis : Split(bases))
+        const vtkIdType landmarks = std::stoll(count);
+        auto sources = KnownWarps::SurfacePoints(warp.Mesh, landmarks, 3 + draw);
+        auto targets = KnownWarps::Moved(sources, warp.Map);
+        if (landmarks <= tpsMax)
         {
-          RunThinPlateSpline(warp, sources, targets, basis);
+          for (const auto& basis : Split(bases))
+          {
+            RunThinPlateSpline(warp, sources, targets, basis, draw);
+          }
         }
-      }
-      for (const auto& mode : Split(modes))
-      {
-        last = RunWarp(warp, sources, targets, mode, bending);
-        lastTargets = targets;
+        for (const auto& mode : Split(modes))
+        {
+          last = RunWarp(warp, sources, targets, mode, bending, draw);
+          lastTargets = targets;
+        }
       }
     }
     if (last && drags > 0)
