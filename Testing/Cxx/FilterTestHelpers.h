@@ -8,10 +8,15 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkMath.h"
+#include "vtkDataArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +43,31 @@ public:
 private:
   vtkNew<vtkCallbackCommand> Callback;
 };
+
+// Whether `output` has a Displacement array equal to its points minus `rest`'s, exactly; the
+// largest component of it.
+inline double ExpectDisplacement(vtkPointSet* rest, vtkPointSet* output)
+{
+  vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
+  if (!displacement || displacement->GetNumberOfComponents() != 3)
+  {
+    ADD_FAILURE() << "no three-component Displacement array";
+    return 0.0;
+  }
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < rest->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    rest->GetPoint(i, p);
+    output->GetPoint(i, q);
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(displacement->GetComponent(i, k), q[k] - p[k]) << "point " << i;
+      largest = std::max(largest, std::abs(q[k] - p[k]));
+    }
+  }
+  return largest;
+}
 
 inline vtkSmartPointer<vtkPolyData> BumpyPlane(int resolution = 60)
 {

@@ -395,19 +395,6 @@ TEST(Displacement, IsTheOutputMinusTheInputAndOffByDefault)
   {
     filter->SetHandleTranslation(0.0, 0.1, lift);
     filter->Update();
-    vtkPolyData* output = filter->GetOutput();
-    vtkDataArray* displacement = output->GetPointData()->GetArray("Displacement");
-    ASSERT_NE(displacement, nullptr);
-    ASSERT_EQ(displacement->GetNumberOfComponents(), 3);
-    for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
-    {
-      double p[3], q[3];
-      plane->GetPoint(i, p);
-      output->GetPoint(i, q);
-      for (int k = 0; k < 3; ++k)
-      {
-        ASSERT_EQ(displacement->GetComponent(i, k), q[k] - p[k]) << "point " << i;
-      }
-    }
+    EXPECT_GT(FilterTestHelpers::ExpectDisplacement(plane, filter->GetOutput()), 0.1);
   }
 }
