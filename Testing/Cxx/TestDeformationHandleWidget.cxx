@@ -9,17 +9,21 @@
 // checks the accessors ParaView drives against the filter's handle properties; a tenth drags
 // two handle groups with a widget each, commits and undoes; an eleventh drags in the
 // as-rigid-as-possible mode, a few iterations a frame, and settles the shape on the release; a
-// twelfth previews a motion in place of the surface's actor and draws what the update draws.
+// twelfth previews a motion in place of the surface's actor and draws what the update draws; a
+// thirteenth drags the boundary of a volume mesh, its interior following.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 #include "FilterTestHelpers.h"
+#include "VolumeMeshes.h"
 
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkDeformationHandleWidget.h"
 #include "vtkDeformationPreviewController.h"
+#include "vtkLaplacianVolumeDeformationFilter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkDataSetMapper.h"
 #include "vtkEvent.h"
 #include "vtkIntArray.h"
 #include "vtkInteractorEventRecorder.h"
@@ -964,6 +968,83 @@ int PreviewDrawsWhatTheUpdateDraws()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int VolumeDrag()
+{
+  // The widget pairs with a volume filter's surface filter: a drag of the handle moves the
+  // beam's end, each move updates the volume (one iteration of its interior, Dragging on) and
+  // the release settles it; no cell inverts.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = VolumeMeshes::HexBeam(20, 4, 4, 4.0);
+  vtkNew<vtkLaplacianVolumeDeformationFilter> volume;
+  volume->SetInputData(beam);
+  volume->SetHandleCenter(4.0, 0.5, 0.5);
+  volume->SetHandleRadius(0.3);
+  volume->SetROIRadius(2.0);
+  vtkNew<vtkDataSetMapper> mapper;
+  mapper->SetInputConnection(volume->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRenderWindow> window;
+  XDisplay::AttachOrExit(window);
+  window->SetSize(500, 400);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(window);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  interactor->SetInteractorStyle(style);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(2.0, 0.5, 0.5);
+  camera->SetPosition(2.0, -8.0, 0.5);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+  vtkNew<vtkDeformationHandleWidget> widget;
+  widget->SetInteractor(interactor);
+  widget->SetDeformationFilter(volume->GetSurfaceFilter());
+  widget->SetSurfaceProp(actor);
+  widget->On();
+  window->Render();
+
+  std::vector<int> dragging;
+  vtkNew<vtkCallbackCommand> watch;
+  watch->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    static_cast<std::vector<int>*>(data)->push_back(
+      static_cast<vtkLaplacianVolumeDeformationFilter*>(caller)->GetDragging());
+  });
+  watch->SetClientData(&dragging);
+  volume->AddObserver(vtkCommand::EndEvent, watch);
+  double center[3], at[2];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  renderer->SetWorldPoint(center[0], center[1], center[2], 1.0);
+  renderer->WorldToDisplay();
+  at[0] = renderer->GetDisplayPoint()[0];
+  at[1] = renderer->GetDisplayPoint()[1];
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  recorder->SetInteractor(interactor);
+  recorder->ReadFromInputStringOn();
+  recorder->SetInputString(
+    Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 60.0 * t; }).c_str());
+  recorder->Play();
+  window->Render();
+  volume->RemoveObserver(watch);
+
+  const int during = static_cast<int>(std::count(dragging.begin(), dragging.end(), 1));
+  Check(during >= 5 && !dragging.empty() && dragging.back() == 0,
+    "the drag updates the volume with Dragging on (" + std::to_string(during) + " of " +
+      std::to_string(dragging.size()) + " updates), the release once more with it off");
+  double top = -1e300;
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    top = std::max(top, volume->GetOutput()->GetPoint(i)[2]);
+  }
+  Check(top > 1.3, "the beam's end rose with the handle (top at " + std::to_string(top) + ")");
+  Check(VolumeMeshes::Measure(volume->GetOutput()).Inverted == 0, "no cell inverted");
+  Check(volume->GetNumberOfFailedCells() == 0, "every boundary point met its edit");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int DeleteMidInteraction()
 {
   Scene scene;
@@ -996,7 +1077,8 @@ int main(int argc, char* argv[])
     { "ConstrainedMoveAndWheel", ConstrainedMoveAndWheel },
     { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups },
     { "ARAPDragCapsIterations", ARAPDragCapsIterations },
-    { "PreviewDrawsWhatTheUpdateDraws", PreviewDrawsWhatTheUpdateDraws } };
+    { "PreviewDrawsWhatTheUpdateDraws", PreviewDrawsWhatTheUpdateDraws },
+    { "VolumeDrag", VolumeDrag } };
   const auto found = cases.find(argc > 1 ? argv[1] : "");
   if (found != cases.end())
   {
