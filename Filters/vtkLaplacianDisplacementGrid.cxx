@@ -91,7 +91,8 @@ int vtkLaplacianDisplacementGrid::RequestData(
     this->SetErrorCode(vtkErrorCode::UserError);
     return 1;
   }
-  // The rest positions: the points minus their displacement.
+  // Where the field is known and what it is there: at the rest positions (the points minus
+  // their displacement) the displacement, or, inverse, at the points the way back.
   const vtkIdType n = input->GetNumberOfPoints();
   le::Positions rest(n, 3), moves(n, 3);
   for (vtkIdType i = 0; i < n; ++i)
@@ -101,8 +102,8 @@ int vtkLaplacianDisplacementGrid::RequestData(
     displacement->GetTuple(i, d);
     for (int k = 0; k < 3; ++k)
     {
-      rest(i, k) = p[k] - d[k];
-      moves(i, k) = d[k];
+      rest(i, k) = this->Inverse ? p[k] : p[k] - d[k];
+      moves(i, k) = this->Inverse ? -d[k] : d[k];
     }
   }
   le::LatticeGeometry lattice;
@@ -169,4 +170,5 @@ void vtkLaplacianDisplacementGrid::PrintSelf(ostream& os, vtkIndent indent)
      << this->Dimensions[2] << "\n";
   os << indent << "Padding: " << this->Padding << "\n";
   os << indent << "Smoothness: " << this->Smoothness << "\n";
+  os << indent << "Inverse: " << (this->Inverse ? "On" : "Off") << "\n";
 }

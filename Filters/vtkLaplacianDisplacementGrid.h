@@ -8,11 +8,13 @@
  * output is a vtkImageData whose point array Displacement (also the active scalars) is a
  * continuous displacement field over space, defined inside and outside the surface: trilinear in
  * each voxel, fit to the points' displacements where they are and harmonic between and beyond
- * them (Numerics/DisplacementLattice). vtkGridTransform takes it (SetDisplacementGridData), and
- * vtkImageReslice with that transform's inverse warps an image or a label map as the surface was
- * warped.
+ * them (Numerics/DisplacementLattice). vtkGridTransform takes it (SetDisplacementGridData).
+ * With Inverse on, the field is the way back, from the warped shape to the rest, over the
+ * warped positions: what vtkImageReslice takes as its reslice transform to warp an image or a
+ * label map as the surface was warped, without inverting a transform voxel by voxel.
  *
- * The grid spans the rest positions' bounds, padded by Padding of their extent on each side,
+ * The grid spans the rest positions' bounds (the warped ones' with Inverse), padded by Padding
+ * of their extent on each side,
  * with Dimensions nodes; or, with an image on input port 1, that image's geometry (origin,
  * spacing and extent), as SlicerMorph samples its warps on a volume's grid.
  *
@@ -48,6 +50,14 @@ public:
   vtkSetClampMacro(Smoothness, double, 1e-9, 1e9);
   vtkGetMacro(Smoothness, double);
 
+  /**
+   * Whether the field maps the warped shape back to the rest (over the warped positions) instead
+   * of the rest to the warped shape. Default off.
+   */
+  vtkSetMacro(Inverse, vtkTypeBool);
+  vtkGetMacro(Inverse, vtkTypeBool);
+  vtkBooleanMacro(Inverse, vtkTypeBool);
+
   /** An image whose geometry the grid takes, on input port 1 (optional). */
   void SetReferenceImageConnection(vtkAlgorithmOutput* image) { this->SetInputConnection(1, image); }
   void SetReferenceImageData(vtkDataObject* image);
@@ -64,6 +74,7 @@ protected:
   int Dimensions[3] = { 48, 48, 48 };
   double Padding = 0.1;
   double Smoothness = 0.01;
+  vtkTypeBool Inverse = 0;
 
 private:
   vtkLaplacianDisplacementGrid(const vtkLaplacianDisplacementGrid&) = delete;

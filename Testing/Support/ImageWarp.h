@@ -1,6 +1,6 @@
 // A label image warped with a surface: the rest surface's inside voxelized, the landmark warp's
-// displacement grid (vtkLaplacianDisplacementGrid) as a vtkGridTransform, and the label image
-// resliced through that transform's inverse, as SlicerMorph warps volumes. The tests measure it
+// inverse displacement grid (vtkLaplacianDisplacementGrid, warped to rest) as a
+// vtkGridTransform, and the label image resliced through it, as SlicerMorph warps volumes. The tests measure it
 // against the warped surface voxelized the same way (Dice), and draw it.
 #ifndef ImageWarp_h
 #define ImageWarp_h
@@ -46,11 +46,12 @@ inline vtkSmartPointer<vtkImageData> Voxelize(vtkPolyData* surface, const double
 }
 
 /// `labels` warped by `warped` (a warp's output with its Displacement array): nearest-neighbour
-/// samples of the rest image through the displacement grid's inverse.
+/// samples of the rest image through the inverse displacement grid (warped to rest).
 inline vtkSmartPointer<vtkImageData> WarpLabels(vtkImageData* labels, vtkPointSet* warped)
 {
   vtkNew<vtkLaplacianDisplacementGrid> grid;
   grid->SetInputData(warped);
+  grid->InverseOn();
   grid->Update();
   vtkNew<vtkGridTransform> transform;
   transform->SetDisplacementGridData(grid->GetOutput());
@@ -58,7 +59,7 @@ inline vtkSmartPointer<vtkImageData> WarpLabels(vtkImageData* labels, vtkPointSe
   vtkNew<vtkImageReslice> reslice;
   reslice->SetInputData(labels);
   reslice->SetInformationInput(labels);
-  reslice->SetResliceTransform(transform->GetInverse());
+  reslice->SetResliceTransform(transform);
   reslice->SetInterpolationModeToNearestNeighbor();
   reslice->Update();
   auto result = vtkSmartPointer<vtkImageData>::New();

@@ -194,20 +194,21 @@ inline Warp Bend(const std::string& dataDir)
   return warp;
 }
 
-/// Spot's head turned 40 degrees about the vertical axis through its neck, in a smooth band: a
-/// closed surface, for the image warps.
+/// Spot's hind part turned 30 degrees about the vertical axis through its middle, in a wide
+/// smooth band: a closed surface and a warp whose displacement field stays invertible, for the
+/// image warps (an image is resampled through the warp's inverse).
 inline Warp TurnedHead(const std::string& dataDir)
 {
   Warp warp{ "turned head", LoadDouble(dataDir + "/spot.obj"), nullptr, nullptr };
   double bounds[6];
   warp.Mesh->GetBounds(bounds);
-  const double band = 0.05 * warp.Mesh->GetLength();
-  const double neck = bounds[0] + 0.3 * (bounds[1] - bounds[0]);
+  const double band = 0.15 * warp.Mesh->GetLength();
+  const double neck = bounds[0] + 0.4 * (bounds[1] - bounds[0]);
   const std::array<double, 3> pivot = { neck, 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
   warp.Map = [band, neck, pivot](const double* p, double* q) {
     double turned[3];
-    Turn(p, pivot.data(), 1, 40.0 * Degree, turned);
+    Turn(p, pivot.data(), 1, 30.0 * Degree, turned);
     const double w = Smoothstep(((neck + band) - p[0]) / (2.0 * band));
     for (int k = 0; k < 3; ++k)
     {
