@@ -28,7 +28,9 @@ vtkSmartPointer<vtkTransform> HandleMotion::Transform(
 void HandleMotion::RotationMatrix(const double angles[3], double matrix[3][3])
 {
   const double origin[3] = { 0.0, 0.0, 0.0 };
-  vtkMatrix4x4* m = Transform(origin, angles, origin)->GetMatrix();
+  // Hold the transform: its matrix dies with it.
+  vtkSmartPointer<vtkTransform> transform = Transform(origin, angles, origin);
+  vtkMatrix4x4* m = transform->GetMatrix();
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)

@@ -12,7 +12,6 @@
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkGeometryFilter.h"
 #include "vtkMeshQuality.h"
 #include "vtkPoints.h"
 #include "vtkTransform.h"
@@ -171,13 +170,11 @@ inline Edit FarEdit(vtkUnstructuredGrid* grid, double degrees, double lift)
   {
     centroid += Eigen::Vector3d(grid->GetPoint(i)) / grid->GetNumberOfPoints();
   }
-  vtkNew<vtkGeometryFilter> surface;
-  surface->SetInputData(grid);
-  surface->Update();
+  // The point farthest from the centroid is a vertex of the hull, so on the boundary.
   Eigen::Vector3d far = centroid;
-  for (vtkIdType i = 0; i < surface->GetOutput()->GetNumberOfPoints(); ++i)
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
   {
-    const Eigen::Vector3d p(surface->GetOutput()->GetPoint(i));
+    const Eigen::Vector3d p(grid->GetPoint(i));
     far = (p - centroid).norm() > (far - centroid).norm() ? p : far;
   }
   const Eigen::Vector3d out = (far - centroid).normalized();
