@@ -170,21 +170,54 @@ def make_filter(mesh, mode):
     return deform
 
 
-def scripted_drag(renderer, interactor, widget, pixels=140):
-    """Press on the handle, drag it up, release: what a user does, through the event recorder."""
-    center = [0.0, 0.0, 0.0]
-    widget.GetDeformationHandleRepresentation().GetCurrentCenter(center)
-    renderer.SetWorldPoint(*center, 1.0)
-    renderer.WorldToDisplay()
-    x, y, _ = renderer.GetDisplayPoint()
-    lines = [f"MouseMoveEvent {int(x)} {int(y)} 0 0 0 0 i", f"LeftButtonPressEvent {int(x)} {int(y)} 0 0 0 0 i"]
-    lines += [f"MouseMoveEvent {int(x)} {int(y + pixels * step / 10)} 0 0 0 0 i" for step in range(1, 11)]
-    lines.append(f"LeftButtonReleaseEvent {int(x)} {int(y + pixels)} 0 0 0 0 i")
+def open_window(renderer, title, size, offscreen):
+    """A window showing `renderer`, with its interactor (the trackball camera), on a checked X
+    display: SystemExit saying why where there is none."""
+    window = vtkRenderWindow()
+    error = attach_display(window)
+    if error:
+        raise SystemExit(error)
+    window.SetSize(*size)
+    window.SetWindowName(title)
+    window.AddRenderer(renderer)
+    window.SetOffScreenRendering(bool(offscreen))
+    interactor = vtkRenderWindowInteractor()
+    interactor.SetRenderWindow(window)
+    interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
+    return window, interactor
+
+
+def press_and_drag(interactor, x, y, pixels, steps=10):
+    """Press at display point (x, y), drag `pixels` up in `steps` moves, release: what a user
+    does, through the event recorder."""
+    x, y = int(x), int(y)
+    lines = [f"MouseMoveEvent {x} {y} 0 0 0 0 i", f"LeftButtonPressEvent {x} {y} 0 0 0 0 i"]
+    lines += [f"MouseMoveEvent {x} {y + pixels * step // steps} 0 0 0 0 i" for step in range(1, steps + 1)]
+    lines.append(f"LeftButtonReleaseEvent {x} {y + pixels} 0 0 0 0 i")
     recorder = vtkInteractorEventRecorder()
     recorder.SetInteractor(interactor)
     recorder.ReadFromInputStringOn()
     recorder.SetInputString("\n".join(lines) + "\n")
     recorder.Play()
+
+
+def save_screenshot(window, path):
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    png = vtkPNGWriter()
+    png.SetInputConnection(grab.GetOutputPort())
+    png.SetFileName(path)
+    png.Write()
+
+
+def scripted_drag(renderer, interactor, widget, pixels=140):
+    """Press on the handle, drag it up, release."""
+    center = [0.0, 0.0, 0.0]
+    widget.GetDeformationHandleRepresentation().GetCurrentCenter(center)
+    renderer.SetWorldPoint(*center, 1.0)
+    renderer.WorldToDisplay()
+    x, y, _ = renderer.GetDisplayPoint()
+    press_and_drag(interactor, x, y, pixels)
     moved = [0.0, 0.0, 0.0]
     widget.GetDeformationHandleRepresentation().GetCurrentCenter(moved)
     return math.dist(center, moved)
@@ -221,18 +254,7 @@ def main(argv):
     status.GetPositionCoordinate().SetCoordinateSystemToNormalizedDisplay()
     status.SetPosition(0.01, 0.97)
 
-    window = vtkRenderWindow()
-    error = attach_display(window)
-    if error:
-        print(error, file=sys.stderr)
-        return 1
-    window.SetSize(900, 700)
-    window.SetWindowName("Laplacian mesh editing")
-    window.AddRenderer(renderer)
-    window.SetOffScreenRendering(bool(args.offscreen))
-    interactor = vtkRenderWindowInteractor()
-    interactor.SetRenderWindow(window)
-    interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
+    window, interactor = open_window(renderer, "Laplacian mesh editing", (900, 700), args.offscreen)
     if mesh is not None:
         view = frame_mesh(renderer, mesh, "xyz".index(args.up))
         deform.SetHandleCenter(mesh.GetPoint(protruding_point(mesh, view)))
@@ -283,12 +305,7 @@ def main(argv):
         return 0
 
     distance = scripted_drag(renderer, interactor, widget)  # the release refreshes the status
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    png = vtkPNGWriter()
-    png.SetInputConnection(grab.GetOutputPort())
-    png.SetFileName(args.offscreen)
-    png.Write()
+    save_screenshot(window, args.offscreen)
     print(f"handle moved by {distance:.4f}; {deform.GetNumberOfFactorizations()} factorization(s); "
           f"wrote {args.offscreen}")
     return 0 if distance > 0 else 1

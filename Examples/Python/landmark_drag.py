@@ -24,17 +24,13 @@ import vtkmodules.vtkInteractionStyle  # noqa: F401  (interactor styles)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (rendering backend)
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
 from vtkmodules.vtkInteractionWidgets import (vtkPointHandleRepresentation3D, vtkSeedRepresentation,
                                               vtkSeedWidget)
-from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkInteractorEventRecorder, vtkPolyDataMapper,
-                                         vtkRenderer, vtkRenderWindow, vtkRenderWindowInteractor,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 import laplacianediting
-from interactive_editor import attach_display, frame_mesh, read_mesh
+from interactive_editor import frame_mesh, open_window, press_and_drag, read_mesh, save_screenshot
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_MESH = os.path.join(HERE, "..", "..", "..", "shared", "data", "stanford-bunny.obj")
@@ -72,18 +68,11 @@ def add_seeds(widget, places):
 
 
 def scripted_drag(renderer, interactor, place, pixels=80):
-    """Press on a landmark, drag it up, release: what a user does, through the event recorder."""
+    """Press on a landmark, drag it up, release."""
     renderer.SetWorldPoint(*place, 1.0)
     renderer.WorldToDisplay()
-    x, y, _ = (int(c) for c in renderer.GetDisplayPoint())
-    lines = [f"MouseMoveEvent {x} {y} 0 0 0 0 i", f"LeftButtonPressEvent {x} {y} 0 0 0 0 i"]
-    lines += [f"MouseMoveEvent {x} {y + pixels * step // 8} 0 0 0 0 i" for step in range(1, 9)]
-    lines.append(f"LeftButtonReleaseEvent {x} {y + pixels} 0 0 0 0 i")
-    recorder = vtkInteractorEventRecorder()
-    recorder.SetInteractor(interactor)
-    recorder.ReadFromInputStringOn()
-    recorder.SetInputString("\n".join(lines) + "\n")
-    recorder.Play()
+    x, y, _ = renderer.GetDisplayPoint()
+    press_and_drag(interactor, x, y, pixels, steps=8)
 
 
 def main(argv):
@@ -112,18 +101,7 @@ def main(argv):
     renderer = vtkRenderer()
     renderer.SetBackground(1, 1, 1)
     renderer.AddActor(surface)
-    window = vtkRenderWindow()
-    error = attach_display(window)
-    if error:
-        print(error, file=sys.stderr)
-        return 1
-    window.SetSize(800, 700)
-    window.SetWindowName("Landmark warp")
-    window.AddRenderer(renderer)
-    window.SetOffScreenRendering(bool(args.offscreen))
-    interactor = vtkRenderWindowInteractor()
-    interactor.SetRenderWindow(window)
-    interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
+    window, interactor = open_window(renderer, "Landmark warp", (800, 700), args.offscreen)
     frame_mesh(renderer, mesh, 1)
     warp.Update()
     if warp.GetErrorCode():
@@ -188,12 +166,7 @@ def main(argv):
     scripted_drag(renderer, interactor, places[highest])
     moved = math.dist(places[highest], targets.GetPoint(highest))
     size = mesh.GetLength()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    png = vtkPNGWriter()
-    png.SetInputConnection(grab.GetOutputPort())
-    png.SetFileName(args.offscreen)
-    png.Write()
+    save_screenshot(window, args.offscreen)
     print(f"landmark {highest} dragged by {moved / size:.3f} of the diagonal in {len(frames)} frames; "
           f"{warp.GetNumberOfFactorizations()} factorization(s); the farthest landmark "
           f"{warp.GetMaximumLandmarkDistance() / size:.1e} of the diagonal from its target; "
