@@ -129,7 +129,9 @@ public:
   /**
    * An exact fit (the default) moves every landmark onto its target, to 1e-10 of the
    * diagonal; off, each landmark is pulled by LandmarkWeight (relative to the surface's
-   * stiffness, default 1) and may end short of its target, as noisy landmarks should.
+   * stiffness, default 1) and may end short of its target, as noisy landmarks should. Where
+   * more landmarks than corners share triangles, no surface meets them all: an exact fit then
+   * warns and fits them in the least-squares sense.
    */
   vtkSetMacro(ExactFit, vtkTypeBool);
   vtkGetMacro(ExactFit, vtkTypeBool);

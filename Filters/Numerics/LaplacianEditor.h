@@ -185,6 +185,8 @@ private:
   std::unique_ptr<AsRigidAsPossibleSolver> Arap;
   ArapIterate ArapWarmStart;
   ArapResult LastArap;
+  // Whether the points proved impossible to meet all at once (fit in the least-squares sense).
+  bool PointsUnmeetable = false;
   // Implicit mode's rigid correction: its buffers, kept between moves.
   ArapIterate Straightened;
   // The linear modes' exact fit: the point targets' correction, carried from solve to solve.
