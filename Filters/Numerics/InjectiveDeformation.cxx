@@ -72,9 +72,11 @@ void QuadraticRoots(double a, double b, double c, double* roots, int& count)
     roots[count++] = a / q;
   }
 }
-}
 
-double InjectiveDeformation::SmallestPositiveRoot(
+
+// The smallest positive t with a0 + a1 t + a2 t^2 + a3 t^3 = 0, for a0 > 0; infinity if none,
+// and (for most tetrahedra, which the bound below clears at once) if none below `below`.
+double SmallestPositiveRoot(
   double a0, double a1, double a2, double a3, double below)
 {
   // Most tetrahedra cannot flatten this soon: the polynomial stays above a0 - |a1| t - ... > 0.
@@ -136,6 +138,8 @@ double InjectiveDeformation::SmallestPositiveRoot(
   return smallest;
 }
 
+}
+
 double InjectiveDeformation::CornerScaledJacobian(
   const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d)
 {
@@ -161,6 +165,10 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   if (static_cast<int>(kinds.size()) != n)
   {
     return "Each point needs a kind.";
+  }
+  if (!(targetWeight > 0.0))
+  {
+    return "The targets' pull must be positive.";
   }
   this->Rest = rest;
   this->Tets = tetrahedra;
@@ -514,6 +522,13 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   {
     still = still && (this->Kinds[p] != PointKind::Targeted || targets.row(p) == this->Rest.row(p));
   }
+  if (options.Continuation &&
+    std::any_of(this->TetWeights.begin(), this->TetWeights.end(), [](double w) { return w != 1.0; }))
+  {
+    // A settle starts from the rest stiffness, not from an earlier shape's reweighting.
+    std::fill(this->TetWeights.begin(), this->TetWeights.end(), 1.0);
+    this->FactoredWeight = 0.0;
+  }
   Eigen::MatrixXd gradient;
   double lastAlpha = 0.0;
   Positions direction = Positions::Zero(n, 3);
@@ -568,65 +583,66 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   // that left them is rarely met twice.
   for (int round = 0; round < Rounds && !still; ++round)
   {
-  if (round > 0 && (snap <= 0.0 || this->LargestMiss(points, targets) <= snap))
-  {
-    break;
-  }
-  for (double weight : weights)
-  {
-    if (still || report.Iterations >= options.MaximumIterations)
+    if (round > 0 && (snap <= 0.0 || this->LargestMiss(points, targets) <= snap))
     {
       break;
     }
-    const std::string error = this->FactorAt(weight);
-    if (!error.empty())
+    for (double weight : weights)
     {
-      break;
-    }
-    this->Lambda = weight;
-    Positions previous = points;
-    for (int stageIterations = 0; report.Iterations < options.MaximumIterations; ++stageIterations)
-    {
-      ++report.Iterations;
-      // AQP: the step starts from x + theta (x - x_before), theta short of any flat tetrahedron.
-      bool accepted = false;
-      double trialEnergy = Infinity;
-      if (options.Accelerate && stageIterations > 0)
-      {
-        const Positions momentum = points - previous;
-        const double theta = std::min(Momentum,
-          SafeFraction * this->LargestSafeStep(points, momentum, Momentum / SafeFraction, loop));
-        const Positions start = points + theta * momentum;
-        double startEnergy = Infinity;
-        accepted = step(start, startEnergy, trialEnergy) && trialEnergy < energy;
-      }
-      // Without momentum where it did not lower the energy: the energy never rises.
-      if (!accepted && !step(points, energy, trialEnergy))
+      if (report.Iterations >= options.MaximumIterations)
       {
         break;
       }
-      previous = points;
-      points = trial;
-      if (options.Reweight && lastAlpha < StallStep)
+      report.Error = this->FactorAt(weight);
+      if (!report.Error.empty())
       {
-        // A cell about to flatten stopped the step: the proxy stiffens the cells as the
-        // energy's curvature has, and is factored again.
-        this->Reweight(points, loop);
-        if (!this->FactorAt(weight).empty())
+        break;
+      }
+      this->Lambda = weight;
+      Positions previous = points;
+      for (int stageIterations = 0; report.Iterations < options.MaximumIterations; ++stageIterations)
+      {
+        ++report.Iterations;
+        // AQP: the step starts from x + theta (x - x_before), theta short of any flat tetrahedron.
+        bool accepted = false;
+        double trialEnergy = Infinity;
+        if (options.Accelerate && stageIterations > 0)
+        {
+          const Positions momentum = points - previous;
+          const double theta = std::min(Momentum,
+            SafeFraction * this->LargestSafeStep(points, momentum, Momentum / SafeFraction, loop));
+          const Positions start = points + theta * momentum;
+          double startEnergy = Infinity;
+          accepted = step(start, startEnergy, trialEnergy) && trialEnergy < energy;
+        }
+        // Without momentum where it did not lower the energy: the energy never rises.
+        if (!accepted && !step(points, energy, trialEnergy))
         {
           break;
         }
         previous = points;
-      }
-      const double decrease = energy - trialEnergy;
-      energy = trialEnergy;
-      const double tolerance = weight < this->FinalWeight ? StageTolerance : options.Tolerance;
-      if (decrease <= tolerance * energy)
-      {
-        break;
+        points = trial;
+        if (options.Reweight && lastAlpha < StallStep)
+        {
+          // A cell about to flatten stopped the step: the proxy stiffens the cells as the
+          // energy's curvature has, and is factored again.
+          this->Reweight(points, loop);
+          report.Error = this->FactorAt(weight);
+          if (!report.Error.empty())
+          {
+            break;
+          }
+          previous = points;
+        }
+        const double decrease = energy - trialEnergy;
+        energy = trialEnergy;
+        const double tolerance = weight < this->FinalWeight ? StageTolerance : options.Tolerance;
+        if (decrease <= tolerance * energy)
+        {
+          break;
+        }
       }
     }
-  }
   }
   // The distortion before the snap, which moves targeted points by less than `snap`.
   const double penalty = this->Penalty(points, targets);

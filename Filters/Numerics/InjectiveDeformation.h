@@ -65,6 +65,8 @@ struct InjectiveReport
   double LargestMiss = 0.0;
   /// Corner tetrahedra of non-positive volume in the result (0 when the start had none).
   int Inverted = 0;
+  /// Why the solve stopped early (a factorization refused), empty otherwise.
+  std::string Error;
 };
 
 class InjectiveDeformation
@@ -88,11 +90,6 @@ public:
   /// Distance of each targeted point from its target after the last Solve (0 for the others).
   const std::vector<double>& GetMisses() const { return this->Misses; }
 
-  int GetNumberOfPoints() const { return static_cast<int>(this->Kinds.size()); }
-  int GetNumberOfTetrahedra() const { return static_cast<int>(this->Tets.rows()); }
-  int GetNumberOfUnknowns() const { return static_cast<int>(this->Unknowns.size()); }
-  double GetFactorizationSeconds() const { return this->Factor.GetFactorizationSeconds(); }
-
   /// det(b - a, c - a, d - a) / (|b - a| |c - a| |d - a|): 1 for a right corner, 0 flat,
   /// negative inverted.
   static double CornerScaledJacobian(
@@ -102,9 +99,6 @@ public:
   static double TetrahedronScaledJacobian(
     const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d);
 
-  /// The smallest positive t with a0 + a1 t + a2 t^2 + a3 t^3 = 0, for a0 > 0; infinity if
-  /// none, or none below `below`.
-  static double SmallestPositiveRoot(double a0, double a1, double a2, double a3, double below);
 
 private:
   // Factors the proxy with the targets' pull at `weight`, unless it is factored at it.
@@ -149,7 +143,7 @@ private:
   SolverBackend Backend = SolverBackend::Cholmod;
   double TotalVolume = 0.0;
   SparseCholesky Factor;
-  mutable std::vector<double> Misses;
+  std::vector<double> Misses;
 };
 }
 
