@@ -176,7 +176,7 @@ int vtkLaplacianLandmarkWarp::RequestData(
   source.Weight = this->ExactFit ? ExactFitWeight : this->LandmarkWeight;
   source.FollowUnreferenced = !grid; // a grid's interior follows its own way
   lep::OutputOptions outputs;
-  outputs.Displacement = this->OutputDisplacement != 0;
+  outputs.Displacement = this->OutputDisplacement && !grid; // a grid's comes from its follower
   if (pipeline.Run(
         surface, warped, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0, outputs))
   {
@@ -192,11 +192,7 @@ int vtkLaplacianLandmarkWarp::RequestData(
 vtkPolyData* vtkLaplacianLandmarkWarp::BoundaryOf(vtkUnstructuredGrid* grid)
 {
   lep::VolumeFollower& volume = this->Internals->Volume;
-  std::string error = lep::VolumeMesh::CheckGrid(grid);
-  if (error.empty())
-  {
-    error = volume.Update(grid, grid->GetPoints());
-  }
+  const std::string error = volume.Update(grid, grid->GetPoints());
   return this->Internals->Pipeline.Check(error) ? volume.GetMesh().GetBoundary() : nullptr;
 }
 
@@ -207,10 +203,7 @@ bool vtkLaplacianLandmarkWarp::FollowBoundary(vtkPolyData* warpedBoundary, vtkUn
   const lep::OutputEdit edit = pipeline.GetEdit();
   lep::VolumeFollower::Settings settings;
   settings.Dragging = this->Dragging != 0;
-  if (this->Solver == SOLVER_SIMPLICIAL_LDLT)
-  {
-    settings.Backend = le::SolverBackend::SimplicialLDLT;
-  }
+  settings.Backend = static_cast<le::SolverBackend>(this->Solver);
   if (!pipeline.Check(volume.Follow(edit.Moved->Ids, warpedBoundary->GetPoints(), edit.RegionVersion, settings)))
   {
     output->ShallowCopy(this->GetInputDataObject(0, 0));

@@ -131,12 +131,8 @@ int vtkLaplacianVolumeDeformationFilter::RequestData(
 bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {
   vtkInternals& internals = *this->Internals;
-  std::string error = lep::VolumeMesh::CheckGrid(input);
-  vtkPoints* rest = error.empty() ? internals.Rest.Get(input)->GetPoints() : nullptr;
-  if (error.empty())
-  {
-    error = internals.Follower.Update(input, rest);
-  }
+  vtkPoints* rest = internals.Rest.Get(input)->GetPoints();
+  std::string error = internals.Follower.Update(input, rest);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
@@ -189,6 +185,7 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
     settings.Iterations = this->VolumeIterations;
     settings.DragIterations = this->DragVolumeIterations;
     settings.Dragging = surface->GetDragging() != 0;
+    // The volume is solved on one process: a surface solved by MUMPS has its volume by CHOLMOD.
     settings.Backend = surface->GetSolver() == vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT
       ? LaplacianEditing::SolverBackend::SimplicialLDLT
       : LaplacianEditing::SolverBackend::Cholmod;
@@ -261,7 +258,10 @@ void vtkLaplacianVolumeDeformationFilter::SetDragging(vtkTypeBool dragging)
   if (this->GetDragging() != dragging)
   {
     this->Internals->Surface->SetDragging(dragging);
-    this->Modified(); // the update after a drag settles the interior
+    if (!dragging)
+    {
+      this->Modified(); // the update after a drag settles the interior
+    }
   }
 }
 

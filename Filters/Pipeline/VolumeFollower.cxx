@@ -78,10 +78,12 @@ std::string VolumeFollower::Update(vtkUnstructuredGrid* input, vtkPoints* rest)
   this->RestQuality->SetName("ScaledJacobian");
   this->RestQuality->SetNumberOfValues(cells);
   auto position = [rest](vtkIdType id) { return Point(rest, id); };
-  for (vtkIdType cell = 0; cell < cells; ++cell)
-  {
-    this->RestQuality->SetValue(cell, static_cast<float>(this->Mesh.Quality(cell, position)));
-  }
+  SMPFor(0, static_cast<int>(cells), [&](int first, int last) {
+    for (int cell = first; cell < last; ++cell)
+    {
+      this->RestQuality->SetValue(cell, static_cast<float>(this->Mesh.Quality(cell, position)));
+    }
+  });
   return {};
 }
 
@@ -163,6 +165,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     {
       this->Reach = std::max(this->Reach, (Point(rest, id) - centroid).norm());
     }
+    this->Region = 0; // set once its zone is prepared
     std::string error = this->SelectZone(moved, settings);
     if (!error.empty())
     {
@@ -174,7 +177,6 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   options.MaximumIterations = settings.Dragging ? settings.DragIterations : settings.Iterations;
   options.Continuation = !settings.Dragging; // a drag step starts near its targets
   options.Reweight = !settings.Dragging;
-  const Stopwatch watch;
   for (;;)
   {
     const int n = static_cast<int>(this->Zone.Points.size());
@@ -188,11 +190,17 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
         targets.row(row) = this->Edited.row(row) - this->Center.transpose();
       }
     }
+    const Stopwatch watch;
     const InjectiveReport report =
       this->Solver.Solve(targets, this->Solution, options, this->Snap, SMPFor);
+    this->LastFacts.SolveTime += watch.Seconds();
+    if (!report.Error.empty())
+    {
+      this->Region = 0;
+      return "Cannot follow the edit into the volume: " + report.Error;
+    }
     this->LastFacts.Iterations += report.Iterations;
     this->LastFacts.LargestMiss = report.LargestMiss;
-    this->LastFacts.Distortion = report.Distortion;
     if (report.LargestMiss <= this->Snap || settings.Dragging || this->Zone.Complete)
     {
       break;
@@ -206,6 +214,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     std::string error = this->SelectZone(moved, settings);
     if (!error.empty())
     {
+      this->Region = 0;
       return error;
     }
     for (std::size_t row = 0; row < points.size(); ++row)
@@ -214,7 +223,6 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
         solved.row(static_cast<Eigen::Index>(row)) + (center - this->Center).transpose();
     }
   }
-  this->LastFacts.SolveTime = watch.Seconds();
   this->LastFacts.ZonePoints = static_cast<int>(this->Zone.Points.size());
   this->LastFacts.ZoneTetrahedra = static_cast<int>(this->Zone.Tets.rows());
   this->LastEdited = edited;

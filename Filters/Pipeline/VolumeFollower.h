@@ -60,8 +60,6 @@ public:
     int Growths = 0;
     int FailedCells = 0;
     double LargestMiss = 0.0;
-    /// Mean symmetric Dirichlet energy over the zone's rest volume (0: rigid).
-    double Distortion = 0.0;
     double SetupTime = 0.0;
     double SolveTime = 0.0;
   };
@@ -72,7 +70,6 @@ public:
   /// Brings the mesh up to date with `input` (VolumeMesh::Update), the edits starting from the
   /// points `rest` (the input's, or committed ones). Returns an error, empty on success.
   std::string Update(vtkUnstructuredGrid* input, vtkPoints* rest);
-  const VolumeMesh& GetMesh() const { return this->Mesh; }
   VolumeMesh& GetMesh() { return this->Mesh; }
 
   /// Follows the edit that moved the boundary points `moved` (grid ids) to their coordinates in
@@ -94,8 +91,6 @@ public:
   /// point array if `displacement` is on.
   void Write(vtkUnstructuredGrid* output, bool displacement = false);
 
-  /// The zone's points in grid ids, and their positions after the last Follow.
-  const VolumeMesh::Zone& GetZone() const { return this->Zone; }
   const Facts& GetFacts() const { return this->LastFacts; }
 
 private:

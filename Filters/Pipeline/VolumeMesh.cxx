@@ -170,7 +170,8 @@ std::string VolumeMesh::Update(vtkUnstructuredGrid* grid, bool& rebuilt)
     return {};
   }
   this->Boundary = nullptr;
-  const std::string error = this->Build(grid);
+  std::string error = CheckGrid(grid);
+  error = error.empty() ? this->Build(grid) : error;
   if (!error.empty())
   {
     this->Boundary = nullptr;

@@ -51,13 +51,10 @@ public:
     Other
   };
 
-  /// What every volume editor requires of its input: points, at least one 3D cell, linear cells
-  /// only. Returns an error message, empty on success.
-  static std::string CheckGrid(vtkUnstructuredGrid* grid);
-
   /// Builds from `grid` at its points, unless built from the same content (ContentTime);
-  /// `rebuilt` says whether it built. Errors: cells flat or inverted at rest, a face of more
-  /// than two cells, a boundary edge not on exactly two boundary faces.
+  /// `rebuilt` says whether it built. Errors: an empty grid, no 3D cell, non-linear or
+  /// unsupported cells, cells flat or inverted at rest, a face of more than two cells, a
+  /// boundary edge not on exactly two boundary faces.
   std::string Update(vtkUnstructuredGrid* grid, bool& rebuilt);
 
   /// The boundary surface (see the class description); null before a build.
@@ -67,7 +64,6 @@ public:
   /// the grid's, with the interior points' labels 0: a selection labels grid points, and the
   /// surface editor selects on the boundary. Copied again only when `labels` changes.
   void SetBoundaryLabels(vtkDataArray* labels);
-  bool IsOnBoundary(vtkIdType point) const { return this->OnBoundary[point] != 0; }
 
   struct Zone
   {
@@ -134,6 +130,9 @@ public:
   vtkUnstructuredGrid* GetGrid() const { return this->Grid; }
 
 private:
+  // What every volume editor requires of its input: points, at least one 3D cell, linear cells
+  // only. Returns an error message, empty on success.
+  static std::string CheckGrid(vtkUnstructuredGrid* grid);
   std::string Build(vtkUnstructuredGrid* grid);
   std::string BuildCorners();
   std::string BuildBoundary();
