@@ -126,7 +126,7 @@ std::vector<std::string> SplitCSV(const std::string& line)
 
 std::string Trim(const std::string& text)
 {
-  const auto first = text.find_first_not_of(" \t");
+  const auto first = text.find_first_not_of(" \t\r");
   const auto last = text.find_last_not_of(" \t\r");
   return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
 }

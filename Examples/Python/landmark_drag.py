@@ -37,22 +37,24 @@ DEFAULT_MESH = os.path.join(HERE, "..", "..", "..", "shared", "data", "stanford-
 
 
 def rest_landmarks(mesh, path, count):
-    """The landmarks' rest places: the points of a markups file, or `count` vertices that a
-    polygon uses, drawn at random (the same draw every run)."""
+    """The landmarks' rest places and their labels: the points of a markups file (its Label
+    array), or `count` vertices that a polygon uses, drawn at random (the same draw every run;
+    no labels)."""
     if path:
         reader = laplacianediting.vtkLaplacianMarkupsReader()
         reader.SetFileName(path)
         reader.Update()
         if reader.GetErrorCode() or reader.GetOutput().GetNumberOfPoints() == 0:
             raise SystemExit(f"error: no landmarks read from {path}")
-        return [reader.GetOutput().GetPoint(i) for i in range(reader.GetOutput().GetNumberOfPoints())]
+        read = reader.GetOutput()
+        return [read.GetPoint(i) for i in range(read.GetNumberOfPoints())], read.GetPointData().GetAbstractArray("Label")
     used = set()
     polys = mesh.GetPolys()
     for i in range(polys.GetNumberOfCells()):
         cell = mesh.GetCell(i)
         used.update(cell.GetPointId(k) for k in range(cell.GetNumberOfPoints()))
     picked = random.Random(1).sample(sorted(used), min(count, len(used)))
-    return [mesh.GetPoint(i) for i in picked]
+    return [mesh.GetPoint(i) for i in picked], None
 
 
 def add_seeds(widget, places):
@@ -84,7 +86,7 @@ def main(argv):
     args = parser.parse_args(argv)
 
     mesh = read_mesh(args.mesh)
-    places = rest_landmarks(mesh, args.landmarks, args.count)
+    places, labels = rest_landmarks(mesh, args.landmarks, args.count)
     sources, targets = vtkPoints(), vtkPoints()
     for place in places:
         sources.InsertNextPoint(place)
@@ -145,6 +147,8 @@ def main(argv):
             return
         landmarks = vtkPolyData()
         landmarks.SetPoints(targets)
+        if labels is not None:
+            landmarks.GetPointData().AddArray(labels)  # Slicer's labels kept
         markups = laplacianediting.vtkLaplacianMarkupsWriter()
         markups.SetInputData(landmarks)
         markups.SetFileName("targets.mrk.json")

@@ -1,6 +1,6 @@
 // vtkLaplacianVolumeDeformationFilter: the volume follows its boundary's edit without inverting a
 // cell. Inverted cells are counted by VTK's vtkMeshQuality (Verdict), not by the filter's own
-// measure. The tetrahedral meshes are tetgen's, made by the Volume.TetgenMeshes fixture.
+// measure. The tetrahedral meshes are tetgen's, made here and cached in the build's temporary folder.
 #include "FilterTestHelpers.h"
 #include "VolumeMeshes.h"
 
@@ -131,7 +131,9 @@ TEST(VolumeDeformation, NothingMovedGivesTheInputBack)
   vtkDataArray* quality = output->GetCellData()->GetArray("ScaledJacobian");
   ASSERT_NE(quality, nullptr);
   EXPECT_NEAR(quality->GetRange()[0], 1.0, 1e-6);
-  EXPECT_EQ(output->GetCellData()->GetArray("EditFailed")->GetRange()[1], 0.0);
+  vtkDataArray* failed = output->GetCellData()->GetArray("EditFailed");
+  ASSERT_NE(failed, nullptr);
+  EXPECT_EQ(failed->GetRange()[1], 0.0);
 }
 
 TEST(VolumeDeformation, PassesPointCellAndFieldDataThrough)
@@ -186,7 +188,7 @@ TEST(VolumeDeformation, RigidMotionOfTheWholeRegionIsReproduced)
   }
   std::printf("rigid turn of the whole beam: largest error %.2e of the diagonal\n",
     worst / beam->GetLength());
-  EXPECT_LT(worst, 1e-3 * beam->GetLength());
+  EXPECT_LT(worst, 2e-5 * beam->GetLength());
   EXPECT_EQ(VolumeMeshes::Measure(output).Inverted, 0);
 }
 
@@ -204,7 +206,7 @@ TEST(VolumeDeformation, HexBeamBendLeavesNoInvertedCell)
   EXPECT_EQ(validity.Inverted, 0);
   EXPECT_EQ(filter->GetNumberOfFailedCells(), 0);
   EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
-  // The filter's ScaledJacobian agrees with Verdict's on hexahedra's smallest corner.
+  // The filter's ScaledJacobian: positive, as Verdict's is.
   EXPECT_GT(output->GetCellData()->GetArray("ScaledJacobian")->GetRange()[0], 0.0);
   // The zone reaches the region's radius from the region: beyond twice the region, at rest.
   const double radius = 3.0 * (1.0 + std::pow(2.0, filter->GetNumberOfZoneGrowths()));
@@ -255,7 +257,7 @@ TEST_P(TetgenBend, NoInvertedCellAndTheBoundaryMet)
   EXPECT_GT(moved, 0);
   const double radius =
     mesh->GetLength() * 0.3 * (1.0 + std::pow(2.0, filter->GetNumberOfZoneGrowths()));
-  ExpectFarPointsUntouched(mesh, output, edit.Center, radius);
+  EXPECT_GT(ExpectFarPointsUntouched(mesh, output, edit.Center, radius), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, TetgenBend,
@@ -533,14 +535,17 @@ TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
   EXPECT_EQ(output->GetCellData()->GetArray("Material"), beam->GetCellData()->GetArray("Material"));
   EXPECT_EQ(VolumeMeshes::Measure(output).Inverted, 0);
   // The interior follows: the beam's centre line at x = 6 rises with the boundary around it.
+  int interior = 0;
   for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
   {
     const double* p = beam->GetPoint(i);
     if (p[0] == 6.0 && p[1] == 0.4 && p[2] == 0.4)
     {
+      ++interior;
       EXPECT_GT(output->GetPoint(i)[2] - p[2], 0.2) << "interior point " << i;
     }
   }
+  EXPECT_EQ(interior, 1);
 }
 
 TEST(VolumeDeformation, DisplacementOfTheVolumeAndOfAWarpedGrid)

@@ -22,9 +22,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstdio> // rename
+#include <cstdlib>
 #include <stdlib.h> // mkdtemp
 #include <fstream>
 #include <limits>
@@ -34,14 +33,14 @@ namespace VolumeMeshes
 {
 /// tetgen's tetrahedralization of the closed surface `surfacePath` with `switches` (quality
 /// bound and volume limit, e.g. "pq1.4a0.0005": the meshes), cached in `directory` as
-/// NAME.1.vtk. Null, with `error` set, when the surface cannot be read or tetgen fails. tetgen
+/// NAME-SWITCHES.vtk. Null, with `error` set, when the surface cannot be read or tetgen fails. tetgen
 /// runs in a directory of its own and the result is renamed into place, so that processes making
 /// the same mesh at once do not read each other's half-written files.
 inline vtkSmartPointer<vtkUnstructuredGrid> Tetrahedralize(const std::string& surfacePath,
   const std::string& directory, const std::string& name, const std::string& switches,
   std::string& error)
 {
-  const std::string result = directory + "/" + name + ".1.vtk";
+  const std::string result = directory + "/" + name + "-" + switches + ".vtk"; // one file a mesh
   if (!std::ifstream(result))
   {
     vtkSmartPointer<vtkPolyData> surface = MeshReader::Read(surfacePath, error);
