@@ -289,8 +289,8 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   }
   this->Factor = SparseCholesky();
   this->Factor.SetManySolves(true);
-  this->FactoredWeight = 0.0;
-  return this->FactorAt(targetWeight);
+  this->FactoredWeight = 0.0; // Solve factors at its first stage's weight
+  return {};
 }
 
 std::string InjectiveDeformation::FactorAt(double weight)

@@ -72,10 +72,10 @@ struct InjectiveReport
 class InjectiveDeformation
 {
 public:
-  /// Takes the rest positions, the corner tetrahedra and each point's kind, and factors the
-  /// proxy. `targetWeight` is lambda: how much stiffer than the mesh around it a target's pull
-  /// is. Returns an error (a tetrahedron not positive at rest, no point to move, a factor
-  /// refused), empty on success.
+  /// Takes the rest positions, the corner tetrahedra and each point's kind, and assembles the
+  /// proxy (Solve factors it, at the weights its stages need). `targetWeight` is lambda: how
+  /// much stiffer than the mesh around it a target's pull is. Returns an error (a tetrahedron
+  /// not positive at rest, no point to move), empty on success.
   std::string Prepare(const Positions& rest, const Tetrahedra& tetrahedra,
     const std::vector<PointKind>& kinds, double targetWeight = 1e4,
     SolverBackend backend = SolverBackend::Cholmod);
