@@ -183,12 +183,16 @@ int OutputWriter::CountDownstreamReferences(
   return count;
 }
 
-void OutputWriter::SetFilter(vtkAlgorithm* filter)
+OutputArray::Holders OutputWriter::PipelineHolders(vtkAlgorithm* filter)
 {
-  const OutputArray::Holders holders = [filter](vtkObjectBase* object,
-                                                     vtkObjectBase* ownPoints) {
+  return [filter](vtkObjectBase* object, vtkObjectBase* ownPoints) {
     return CountDownstreamReferences(filter, object, ownPoints);
   };
+}
+
+void OutputWriter::SetFilter(vtkAlgorithm* filter)
+{
+  const OutputArray::Holders holders = PipelineHolders(filter);
   for (OutputArray* array : { &this->Points, &this->PointNormals, &this->CellNormals, &this->Roles })
   {
     array->SetPipelineHolders(holders);

@@ -54,6 +54,8 @@ public:
   /// array).
   static int CountDownstreamReferences(
     vtkAlgorithm* filter, vtkObjectBase* object, vtkObjectBase* ownPoints);
+  /// The same count as the output arrays of `filter` take it (OutputArray::SetPipelineHolders).
+  static OutputArray::Holders PipelineHolders(vtkAlgorithm* filter);
 
   /// Whole copies of a rest array made so far (points, normals and roles), for tests.
   vtkIdType GetNumberOfCopies() const;

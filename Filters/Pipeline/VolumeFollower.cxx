@@ -39,9 +39,7 @@ Vector3 Point(vtkPoints* points, vtkIdType id)
 
 void VolumeFollower::SetFilter(vtkAlgorithm* filter)
 {
-  const OutputArray::Holders holders = [filter](vtkObjectBase* object, vtkObjectBase* ownPoints) {
-    return OutputWriter::CountDownstreamReferences(filter, object, ownPoints);
-  };
+  const OutputArray::Holders holders = OutputWriter::PipelineHolders(filter);
   for (OutputArray* array : { &this->Points, &this->Quality, &this->Failures })
   {
     array->SetPipelineHolders(holders);

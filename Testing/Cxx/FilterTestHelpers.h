@@ -79,7 +79,7 @@ inline double Diagonal(vtkPolyData* mesh)
   return mesh->GetLength();
 }
 
-inline double MaxPointDistance(vtkPolyData* a, vtkPolyData* b)
+inline double MaxPointDistance(vtkPointSet* a, vtkPointSet* b)
 {
   double worst = 0.0;
   for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
