@@ -367,6 +367,7 @@ lep::SolverSettings vtkLaplacianLandmarkWarp::Settings(double diagonal) const
   settings.Dragging = this->Dragging != 0;
   settings.DragARAPIterations = this->DragARAPIterations;
   settings.Bending = this->BendingWeight;
+  settings.SplinePrior = this->SplinePriorWeight;
   return settings;
 }
 
@@ -451,6 +452,7 @@ void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
   os << indent << "BendingWeight: " << this->BendingWeight << "\n";
+  os << indent << "SplinePriorWeight: " << this->SplinePriorWeight << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";

@@ -198,6 +198,18 @@ public:
   vtkGetMacro(BendingWeight, double);
 
   /**
+   * As-rigid-as-possible mode: the pull towards the landmarks' thin-plate spline, relative to
+   * the surface's stiffness at the landmarks' spacing (1; 0 turns it off). Sparse landmarks
+   * leave the rigid energy many shapes of nearly equal cost, and which one a warp lands in
+   * varies with the draw of landmarks; the pull makes it the spline's smooth bend, with the
+   * details kept. Off, sparse landmarks on a motion of rigid parts are followed more closely
+   * (see Documentation/landmark-warps.md). The spline is fit up to 1,000 landmarks; more hold
+   * the surface without it, and landmarks on one plane fix none.
+   */
+  vtkSetClampMacro(SplinePriorWeight, double, 0.0, 1e3);
+  vtkGetMacro(SplinePriorWeight, double);
+
+  /**
    * As-rigid-as-possible mode: the most iterations an update (100) and the relative energy
    * decrease an iteration that stops it (1e-4).
    */
@@ -283,6 +295,7 @@ private:
   vtkTypeBool ExactFit = 1;
   double LandmarkWeight = 1.0;
   double BendingWeight = 100.0;
+  double SplinePriorWeight = 1.0;
   int ARAPIterations = 100;
   double Convergence = 1e-4;
   vtkTypeBool Dragging = 0;

@@ -58,6 +58,10 @@ struct DeformationOptions
   /// As-rigid-as-possible mode: the weight of its bending term (ArapBending.h), which a region
   /// held by sparse points needs; 0, the default, leaves it out.
   double Bending = 0.0;
+  /// As-rigid-as-possible mode with points: the weight, relative to the system's stiffness, of
+  /// the pull towards the points' thin-plate spline (AsRigidAsPossibleSolver.h); 0, the
+  /// default, leaves it out.
+  double SplinePrior = 0.0;
 
   bool operator==(const DeformationOptions& other) const
   {
@@ -68,7 +72,7 @@ struct DeformationOptions
       this->Distributed == other.Distributed &&
       this->LeastSquares == other.LeastSquares && (this->Points != nullptr) == (other.Points != nullptr) &&
       this->PointsVersion == other.PointsVersion && this->PointWeight == other.PointWeight &&
-      this->Bending == other.Bending;
+      this->Bending == other.Bending && this->SplinePrior == other.SplinePrior;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };

@@ -23,6 +23,7 @@ DeformationOptions SolverSettings::System(double availableMemory) const
     1048576.0 * (this->MaximumFactorMemory > 0.0 ? this->MaximumFactorMemory : availableMemory);
   system.Distributed = this->Distributed;
   system.Bending = this->Bending;
+  system.SplinePrior = this->SplinePrior;
   return system;
 }
 

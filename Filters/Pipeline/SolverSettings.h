@@ -39,6 +39,8 @@ struct VTKLAPLACIANEDITINGFILTERS_EXPORT SolverSettings
   bool Extrapolation = true;
   /// As-rigid-as-possible: the bending term's weight (0: none).
   double Bending = 0.0;
+  /// As-rigid-as-possible with points: the spline prior's weight (0: none).
+  double SplinePrior = 0.0;
   /// A drag is going on: each update runs at most DragARAPIterations.
   bool Dragging = false;
   int DragARAPIterations = 2;

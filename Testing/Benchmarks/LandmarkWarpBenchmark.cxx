@@ -4,15 +4,16 @@
 //
 //   LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]
 //     [--landmarks 100,300,1000,10000] [--tps-max N] [--tps-basis r2logr,r]
-//     [--modes arap,none,explicit,implicit] [--bending W] [--drags N] [--draws N]
+//     [--modes arap,none,explicit,implicit] [--bending W] [--spline-prior W] [--drags N]
+//     [--draws N]
 //
 // Landmarks are random points on the surface (inside triangles), their targets the known
 // motion of them. For each method: the root-mean-square distance of every vertex from the true
 // shape and the largest drift of the part that should stay, both in fractions of the diagonal,
 // and the seconds the warp took (a fresh filter: binding, factorization and solve). TPS runs up
 // to --tps-max landmarks (1000; its time grows with the cube of the count), with VTK's default
-// kernel (r2logr) or the 3D one (r). --bending sets the warp's BendingWeight (its default,
-// 100). After the largest count, --drags (20) updates move one landmark with the factorization
+// kernel (r2logr) or the 3D one (r). --bending and --spline-prior set the warp's
+// BendingWeight and SplinePriorWeight (their defaults: 100, 1). After the largest count, --drags (20) updates move one landmark with the factorization
 // reused (Dragging on): the median seconds an update and the factorizations in all. --draws
 // repeats each count with other random landmarks (seeds 3, 4, ...), each line saying its draw.
 #include "KnownWarps.h"
@@ -151,7 +152,7 @@ void RunThinPlateSpline(const KnownWarps::Warp& warp, vtkPoints* sources, vtkPoi
 }
 
 vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, vtkPoints* sources,
-  vtkPoints* targets, const std::string& mode, double bending, int draw)
+  vtkPoints* targets, const std::string& mode, double bending, double splinePrior, int draw)
 {
   auto filter = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
   filter->SetInputData(warp.Mesh);
@@ -161,6 +162,10 @@ vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, 
   if (bending >= 0.0)
   {
     filter->SetBendingWeight(bending);
+  }
+  if (splinePrior >= 0.0)
+  {
+    filter->SetSplinePriorWeight(splinePrior);
   }
   const auto start = Clock::now();
   filter->Update();
@@ -213,7 +218,7 @@ int main(int argc, char* argv[])
     std::cout << "usage: LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]\n"
                  "  [--landmarks 100,300,1000,10000] [--tps-max N] "
                  "[--tps-basis r2logr,r] [--modes arap,none,explicit,implicit] [--bending W] "
-                 "[--drags N] [--draws N]\n";
+                 "[--spline-prior W] [--drags N] [--draws N]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string dataDir = argv[1];
@@ -222,7 +227,7 @@ int main(int argc, char* argv[])
   vtkIdType tpsMax = 1000;
   int drags = 20;
   int draws = 1;
-  double bending = -1.0; // the filter's default
+  double bending = -1.0, splinePrior = -1.0; // the filter's defaults
   for (int a = 2; a + 1 < argc; a += 2)
   {
     const std::string option = argv[a], value = argv[a + 1];
@@ -249,6 +254,10 @@ int main(int argc, char* argv[])
     else if (option == "--bending")
     {
       bending = std::stod(value);
+    }
+    else if (option == "--spline-prior")
+    {
+      splinePrior = std::stod(value);
     }
     else if (option == "--drags")
     {
@@ -293,7 +302,7 @@ int main(int argc, char* argv[])
         }
         for (const auto& mode : Split(modes))
         {
-          last = RunWarp(warp, sources, targets, mode, bending, draw);
+          last = RunWarp(warp, sources, targets, mode, bending, splinePrior, draw);
           lastTargets = targets;
         }
       }

@@ -9,6 +9,7 @@
 #include "ImplicitSimilaritySystem.h"
 #include "LaplacianOperator.h"
 #include "SurfaceMesh.h"
+#include "ThinPlateSpline.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
@@ -640,4 +641,67 @@ TEST(EditRegion, RejectsBadSelections)
   labels[5] = 3;
   EXPECT_EQ(SelectLabeledRegion(mesh, labels, 0.1, region), "");
   EXPECT_EQ(region.NumberOfHandleGroups, 2);
+}
+
+namespace
+{
+// Landmarks spread through a unit box (not on a plane), and displacements for them.
+Positions BoxLandmarks(int count, unsigned seed)
+{
+  std::srand(seed);
+  return Positions::Random(count, 3);
+}
+}
+
+TEST(ThinPlateSpline, InterpolatesTheLandmarksAndReproducesAffineMaps)
+{
+  const Positions landmarks = BoxLandmarks(60, 1);
+  ThinPlateSpline spline;
+  ASSERT_TRUE(spline.Fit(landmarks));
+  // Any displacements are met at the landmarks.
+  const Positions displacements = 0.1 * BoxLandmarks(60, 2);
+  EXPECT_LE((spline.Displace(displacements, landmarks) - displacements).cwiseAbs().maxCoeff(), 1e-10);
+  // An affine displacement is the spline everywhere, not only at the landmarks.
+  Eigen::Matrix3d linear;
+  linear << 0.2, -0.1, 0.05, 0.3, 0.1, 0.0, -0.2, 0.1, 0.4;
+  const Eigen::RowVector3d shift(0.5, -0.3, 0.2);
+  auto affine = [&](const Positions& points) {
+    Positions moved = points * linear.transpose();
+    moved.rowwise() += shift;
+    return moved;
+  };
+  const Positions elsewhere = 2.0 * BoxLandmarks(500, 3);
+  EXPECT_LE((spline.Displace(affine(landmarks), elsewhere, ParallelFor(SerialFor)) - affine(elsewhere))
+              .cwiseAbs()
+              .maxCoeff(),
+    1e-10);
+}
+
+TEST(ThinPlateSpline, IsTheSumOfItsCardinalFunctions)
+{
+  // What a drag's prior relies on: moving one landmark moves the spline by its cardinal function
+  // times the move.
+  const Positions landmarks = BoxLandmarks(40, 4);
+  ThinPlateSpline spline;
+  ASSERT_TRUE(spline.Fit(landmarks));
+  const Positions points = BoxLandmarks(300, 5);
+  Positions before = 0.1 * BoxLandmarks(40, 6), after = before;
+  after.row(7) += Eigen::RowVector3d(0.02, -0.05, 0.01);
+  const Positions moved = spline.Displace(before, points) +
+    spline.Cardinal(7, points) * (after.row(7) - before.row(7));
+  EXPECT_LE((moved - spline.Displace(after, points)).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LE(std::abs(spline.Cardinal(7, landmarks)(7) - 1.0), 1e-10);
+  EXPECT_LE(std::abs(spline.Cardinal(7, landmarks)(8)), 1e-10);
+}
+
+TEST(ThinPlateSpline, RefusesLandmarksThatFixNoSpline)
+{
+  ThinPlateSpline spline;
+  EXPECT_FALSE(spline.Fit(BoxLandmarks(3, 7))) << "fewer than four";
+  Positions flat = BoxLandmarks(50, 8);
+  flat.col(2).setConstant(0.25);
+  EXPECT_FALSE(spline.Fit(flat)) << "on a plane";
+  EXPECT_TRUE(spline.IsEmpty());
+  EXPECT_FALSE(spline.Fit(BoxLandmarks(ThinPlateSpline::MaximumLandmarks + 1, 9))) << "too many";
+  EXPECT_TRUE(spline.Fit(BoxLandmarks(4, 10)));
 }
