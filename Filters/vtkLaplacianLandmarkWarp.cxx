@@ -20,6 +20,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -66,6 +67,11 @@ struct vtkLaplacianLandmarkWarp::vtkInternals
   // Ports 1 and 2's landmarks, paired.
   vtkNew<vtkPoints> PairedSources;
   vtkNew<vtkPoints> PairedTargets;
+  // Targets moved in place of the given ones, and the targets with them.
+  std::map<vtkIdType, std::array<double, 3>> MovedTargets;
+  vtkNew<vtkPoints> EditedTargets;
+  // The last update's targets.
+  vtkNew<vtkDoubleArray> WarpedTargets;
   // A volume mesh's: its interior, and its boundary surface as warped.
   lep::VolumeFollower Volume;
   vtkNew<vtkPolyData> WarpedBoundary;
@@ -81,6 +87,8 @@ vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
   this->SetNumberOfInputPorts(3);
   this->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
   this->Internals->Volume.SetFilter(this);
+  this->Internals->EditedTargets->SetDataTypeToDouble();
+  this->Internals->WarpedTargets->SetNumberOfComponents(3);
 }
 
 vtkLaplacianLandmarkWarp::~vtkLaplacianLandmarkWarp()
@@ -97,6 +105,63 @@ void vtkLaplacianLandmarkWarp::SetLandmarksData(vtkDataObject* landmarks)
 void vtkLaplacianLandmarkWarp::SetTargetLandmarksData(vtkDataObject* targets)
 {
   this->SetInputData(2, targets);
+}
+
+void vtkLaplacianLandmarkWarp::SetMovedTarget(vtkIdType landmark, double x, double y, double z)
+{
+  const std::array<double, 3> target = { { x, y, z } };
+  auto& moved = this->Internals->MovedTargets;
+  const auto found = moved.find(landmark);
+  if (found == moved.end() || found->second != target)
+  {
+    moved[landmark] = target;
+    this->Modified();
+  }
+}
+
+int vtkLaplacianLandmarkWarp::GetNumberOfMovedTargets()
+{
+  return static_cast<int>(this->Internals->MovedTargets.size());
+}
+
+void vtkLaplacianLandmarkWarp::RemoveAllMovedTargets()
+{
+  if (!this->Internals->MovedTargets.empty())
+  {
+    this->Internals->MovedTargets.clear();
+    this->Modified();
+  }
+}
+
+vtkDoubleArray* vtkLaplacianLandmarkWarp::GetWarpedTargets()
+{
+  return this->Internals->WarpedTargets;
+}
+
+vtkPoints* vtkLaplacianLandmarkWarp::MoveTargets(vtkPoints* targets)
+{
+  const auto& moved = this->Internals->MovedTargets;
+  if (moved.empty())
+  {
+    return targets;
+  }
+  vtkPoints* edited = this->Internals->EditedTargets;
+  edited->GetData()->DeepCopy(targets->GetData());
+  const vtkIdType count = targets->GetNumberOfPoints();
+  for (const auto& target : moved)
+  {
+    if (target.first >= 0 && target.first < count)
+    {
+      edited->SetPoint(target.first, target.second.data());
+    }
+    else if (!this->Dragging)
+    {
+      vtkWarningMacro(<< "A moved target names landmark " << target.first << ", and there are "
+                      << count << " landmarks: it is left out (RemoveAllMovedTargets forgets it).");
+    }
+  }
+  edited->Modified();
+  return edited;
 }
 
 int vtkLaplacianLandmarkWarp::FillInputPortInformation(int port, vtkInformation* info)
@@ -268,6 +333,8 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
     return pipeline.Check(message.str());
   }
   this->NumberOfLandmarks = static_cast<int>(sources->GetNumberOfPoints());
+  targets = this->MoveTargets(targets);
+  this->Internals->WarpedTargets->DeepCopy(targets->GetData());
   return true;
 }
 
@@ -440,6 +507,7 @@ void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SourceLandmarks: " << this->SourceLandmarks << "\n";
   os << indent << "TargetLandmarks: " << this->TargetLandmarks << "\n";
+  os << indent << "NumberOfMovedTargets: " << this->Internals->MovedTargets.size() << "\n";
   os << indent << "BindingTolerance: " << this->BindingTolerance << "\n";
   os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
   os << indent << "ExactFit: " << (this->ExactFit ? "On" : "Off") << "\n";

@@ -46,6 +46,7 @@
 #include <memory> // for std::unique_ptr
 
 class vtkAlgorithmOutput;
+class vtkDoubleArray;
 class vtkPoints;
 class vtkPointSet;
 class vtkPolyData;
@@ -116,6 +117,17 @@ public:
    */
   void SetTargetLandmarksConnection(vtkAlgorithmOutput* targets) { this->SetInputConnection(2, targets); }
   void SetTargetLandmarksData(vtkDataObject* targets);
+
+  /**
+   * Targets moved in place of the given ones, as ParaView's landmark dragger moves them:
+   * landmark `landmark` (in the order the landmarks pair) goes to (x, y, z), whatever its
+   * target input says, until RemoveAllMovedTargets. `landmark` is a vtkIdType because
+   * ParaView's client-server layer converts doubles to 64-bit integers (its MovedTargets
+   * property calls this). A landmark past the last warns and is left out.
+   */
+  void SetMovedTarget(vtkIdType landmark, double x, double y, double z);
+  int GetNumberOfMovedTargets();
+  void RemoveAllMovedTargets();
 
   /**
    * Binding, in fractions of the input's diagonal: a landmark farther than BindingTolerance
@@ -250,6 +262,8 @@ public:
    * landmarks, setting up (region and factorization) and solving.
    */
   vtkGetMacro(NumberOfLandmarks, int);
+  /** The targets the last update warped to, moved ones included: three components a landmark. */
+  vtkDoubleArray* GetWarpedTargets();
   int GetNumberOfWarpedVertices();
   int GetNumberOfFactorizations();
   int GetNumberOfARAPIterations();
@@ -280,6 +294,8 @@ private:
   bool FindLandmarks(vtkPoints*& sources, vtkPoints*& targets);
   // Ports 1 and 2's points paired by label, or in order.
   bool PairLandmarks(vtkPointSet* sources, vtkPointSet* targets);
+  // The targets with the moved ones in place (the targets themselves if none moved).
+  vtkPoints* MoveTargets(vtkPoints* targets);
   LaplacianEditing::Pipeline::SolverSettings Settings(double diagonal) const;
   // After a solve: the warning for an exact fit that missed, and the landmarks' misses.
   void ReportFit(vtkPolyData* output, vtkPoints* targets);
