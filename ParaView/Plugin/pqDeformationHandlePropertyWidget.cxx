@@ -12,7 +12,6 @@
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkPVDataInformation.h"
-#include "vtkPVGeneralSettings.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVSession.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
@@ -490,19 +489,6 @@ void pqDeformationHandlePropertyWidget::connectPreview(bool connect)
   this->PreviewConnected = connect;
 }
 
-void pqDeformationHandlePropertyWidget::setDragging(bool dragging)
-{
-  // Straight to the filter, not as a command property: pushing a property marks the proxy
-  // modified, and ParaView would update the whole surface's representation at the drag's start
-  // and its release (a second each at 2M points). Where dragging changes the output (a release
-  // without a preview), endAutoApplyDrag marks the pipeline itself.
-  vtkSMProxy* filter = this->proxy();
-  vtkClientServerStream stream;
-  stream << vtkClientServerStream::Invoke << VTKOBJECT(filter) << "SetDragging"
-         << (dragging ? 1 : 0) << vtkClientServerStream::End;
-  filter->GetSession()->ExecuteStream(filter->GetLocation(), stream, false);
-}
-
 bool pqDeformationHandlePropertyWidget::canPreview()
 {
   pqView* view = this->view();
@@ -534,21 +520,10 @@ void pqDeformationHandlePropertyWidget::onInteraction()
 
 void pqDeformationHandlePropertyWidget::beginAutoApplyDrag(bool preview)
 {
-  // With Auto Apply, every move is applied and the view rendered with the new surface and
-  // handle: the render the widget asks for first would show the old surface, and costs as much
-  // (half the frame rate of a drag in the GUI). The view renders only for Auto Apply meanwhile.
-  pqView* view = this->view();
-  vtkSMProperty* property =
-    view ? view->getViewProxy()->GetProperty("EnableRenderOnInteraction") : nullptr;
-  if (!property || !vtkPVGeneralSettings::GetInstance()->GetAutoApply())
+  if (!this->Drag.begin(this->proxy(), this->view()))
   {
     return;
   }
-  this->SavedRenderOnInteraction = vtkSMPropertyHelper(property).GetAsInt();
-  vtkSMPropertyHelper(property).Set(0);
-  view->getViewProxy()->UpdateVTKObjects();
-  // As the VTK widget does: a few as-rigid-as-possible iterations a frame, settled on release.
-  this->setDragging(true);
   this->endPreview(); // one left from a drag whose values were never applied
   this->Previewing = preview && this->canPreview();
   if (this->Previewing)
@@ -560,19 +535,10 @@ void pqDeformationHandlePropertyWidget::beginAutoApplyDrag(bool preview)
 
 void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
 {
-  if (this->SavedRenderOnInteraction < 0)
+  if (!this->Drag.end())
   {
     return;
   }
-  this->setDragging(false);
-  pqView* view = this->view();
-  if (view)
-  {
-    vtkSMPropertyHelper(view->getViewProxy(), "EnableRenderOnInteraction")
-      .Set(this->SavedRenderOnInteraction);
-    view->getViewProxy()->UpdateVTKObjects();
-  }
-  this->SavedRenderOnInteraction = -1;
   if (this->Previewing && this->hasUnappliedMotion())
   {
     // Auto Apply applies the drag's values and updates the pipeline once, settled (Dragging

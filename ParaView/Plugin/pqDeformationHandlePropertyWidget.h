@@ -24,6 +24,7 @@
 #ifndef pqDeformationHandlePropertyWidget_h
 #define pqDeformationHandlePropertyWidget_h
 
+#include "pqAutoApplyDrag.h"
 #include "pqInteractivePropertyWidget.h"
 
 #include <QList>
@@ -84,8 +85,6 @@ private:
   void connectPreview(bool connect);
   // Whether a drag can be previewed: the filter runs where the view renders.
   bool canPreview();
-  // The filter's Dragging, set without marking the pipeline modified.
-  void setDragging(bool dragging);
   // Whether the handle's translation or rotation waits to be applied.
   bool hasUnappliedMotion();
   // Gives the view's surface back to the pipeline.
@@ -116,8 +115,8 @@ private:
   // At the start of an interaction: the rest centre, and whether the handle had moved.
   double StartCenter[3] = { 0.0, 0.0, 0.0 };
   bool StartMoved = false;
-  // The view's EnableRenderOnInteraction before a drag that Auto Apply renders (-1: untouched).
-  int SavedRenderOnInteraction = -1;
+  // A drag that Auto Apply applies move by move.
+  pqAutoApplyDrag Drag;
   // Whether the representation has the filter, and whether the current drag is previewed.
   bool PreviewConnected = false;
   bool Previewing = false;

@@ -1,0 +1,51 @@
+#include "pqAutoApplyDrag.h"
+
+#include "pqView.h"
+#include "vtkClientServerStream.h"
+#include "vtkPVGeneralSettings.h"
+#include "vtkSMPropertyHelper.h"
+#include "vtkSMProxy.h"
+#include "vtkSMSession.h"
+#include "vtkSMViewProxy.h"
+
+bool pqAutoApplyDrag::begin(vtkSMProxy* filter, pqView* view)
+{
+  vtkSMProperty* property =
+    view ? view->getViewProxy()->GetProperty("EnableRenderOnInteraction") : nullptr;
+  if (!property || !vtkPVGeneralSettings::GetInstance()->GetAutoApply())
+  {
+    return false;
+  }
+  this->Filter = filter;
+  this->View = view;
+  this->SavedRenderOnInteraction = vtkSMPropertyHelper(property).GetAsInt();
+  vtkSMPropertyHelper(property).Set(0);
+  view->getViewProxy()->UpdateVTKObjects();
+  pqAutoApplyDrag::setDragging(filter, true);
+  return true;
+}
+
+bool pqAutoApplyDrag::end()
+{
+  if (!this->isActive())
+  {
+    return false;
+  }
+  pqAutoApplyDrag::setDragging(this->Filter, false);
+  if (this->View)
+  {
+    vtkSMPropertyHelper(this->View->getViewProxy(), "EnableRenderOnInteraction")
+      .Set(this->SavedRenderOnInteraction);
+    this->View->getViewProxy()->UpdateVTKObjects();
+  }
+  this->SavedRenderOnInteraction = -1;
+  return true;
+}
+
+void pqAutoApplyDrag::setDragging(vtkSMProxy* filter, bool dragging)
+{
+  vtkClientServerStream stream;
+  stream << vtkClientServerStream::Invoke << VTKOBJECT(filter) << "SetDragging"
+         << (dragging ? 1 : 0) << vtkClientServerStream::End;
+  filter->GetSession()->ExecuteStream(filter->GetLocation(), stream, false);
+}

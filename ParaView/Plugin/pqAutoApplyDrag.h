@@ -1,0 +1,39 @@
+/**
+ * @class   pqAutoApplyDrag
+ * @brief   a drag in the render view that Auto Apply applies move by move
+ *
+ * What the panel's handle and landmark widgets do around such a drag: while it lasts, the view
+ * renders only for Auto Apply (the render the widget asks for first would show the old surface
+ * and costs as much, half the frame rate of a drag), and the filter's Dragging is on (a few
+ * ARAP iterations a move); after it, both are back as they were. Dragging is set straight on
+ * the filter, not through a property: pushing a property marks the proxy modified, and ParaView
+ * would update the whole surface's representation at the drag's start and its release (a
+ * second each at 2M points).
+ */
+#ifndef pqAutoApplyDrag_h
+#define pqAutoApplyDrag_h
+
+#include <QPointer>
+
+class pqView;
+class vtkSMProxy;
+
+class pqAutoApplyDrag
+{
+public:
+  /// Starts a drag of `filter` in `view`; false, with nothing done, without Auto Apply.
+  bool begin(vtkSMProxy* filter, pqView* view);
+  /// Ends the drag; false if none was going on.
+  bool end();
+  bool isActive() const { return this->SavedRenderOnInteraction >= 0; }
+
+private:
+  static void setDragging(vtkSMProxy* filter, bool dragging);
+
+  vtkSMProxy* Filter = nullptr;
+  QPointer<pqView> View;
+  // The view's EnableRenderOnInteraction before the drag (-1: no drag).
+  int SavedRenderOnInteraction = -1;
+};
+
+#endif
