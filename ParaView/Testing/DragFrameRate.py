@@ -65,16 +65,6 @@ def edit(triangles, mesh_path, fraction, mode):
     return deform, view
 
 
-def still_render_seconds(view):
-    """The median of ten still renders of the unchanged scene."""
-    stills = []
-    for _ in range(10):
-        before = time.perf_counter()
-        view.StillRender()
-        stills.append(time.perf_counter() - before)
-    return sorted(stills)[len(stills) // 2]
-
-
 def drag(deform, view, frames):
     """Drags the handle up by 2 pixels a frame; returns each frame's seconds, those of the
     pipeline updates among them, of the release, and whether the preview drew the drag."""
@@ -118,23 +108,6 @@ def drag(deform, view, frames):
     return times, update, release, previewed
 
 
-def figures(times, update, release, frames, still):
-    """One drag's figures: its first frame, the median of the others, the release."""
-    frame = sorted(times[1:] or times)[len(times[1:] or times) // 2]
-    return {"first_frame_ms": round(1000.0 * times[0], 1),
-            "frame_ms": round(1000.0 * frame, 2),
-            "frame_over_still": round(frame / still, 2),
-            "first_frame_over_still": round(times[0] / still, 2),
-            "filter_ms": round(1000.0 * update / frames, 2),
-            "release_ms": round(1000.0 * (release["render"] - release["start"]), 1),
-            "release_over_still": round((release["render"] - release["start"]) / still, 2),
-            "release_steps_ms": {step: round(1000.0 * (release[step] - release[last]), 1)
-                                 for last, step in (("start", "event"), ("event", "update"),
-                                                    ("update", "render"))},
-            "release_window": [release["start"], release["render"]],
-            "first_frame_window": release["first_frame_window"]}
-
-
 def main(out):
     args = os.environ["LAPLACIAN_BENCH"].split()
     mesh_path, fraction = args[0], float(args[1])
@@ -143,7 +116,8 @@ def main(out):
     mode = {"ARAP": "As rigid as possible"}.get(mode, mode)
     drags = int(args[4]) if len(args) > 4 else 1
     deform, view = edit(load(mesh_path), mesh_path, fraction, mode)
-    still = still_render_seconds(view)
+    import ViewEvents as gui
+    still = gui.still_render_seconds(view)
 
     def info(name):
         deform.UpdatePropertyInformation()
@@ -153,7 +127,7 @@ def main(out):
     each = []
     for _ in range(drags):
         times, update, release, previewed = drag(deform, view, frames)
-        each.append(figures(times, update, release, frames, still))
+        each.append(gui.figures(times, update, release, frames, still))
     result = {"mesh": os.path.basename(mesh_path), "mode": mode,
               "roi_vertices": info("NumberOfROIVertices"), "frames": frames,
               "previewed": previewed, "fps": round(frames / sum(times), 2),

@@ -1,6 +1,7 @@
 """Mouse events sent to a ParaView render view's interactor, as Qt would send them, and what the
 panel's widget holds: helpers of the GUI tests and the GUI drag benchmark."""
 import os
+import time
 
 
 class ViewEvents:
@@ -79,3 +80,31 @@ class Checks:
         with open(self.output + ".result", "w") as result:
             result.write("\n".join(self.failures) if self.failures else "passed")
         os._exit(1 if self.failures else 0)
+
+
+def still_render_seconds(view):
+    """The median of ten still renders of the unchanged scene (the drag benchmarks' unit)."""
+    stills = []
+    for _ in range(10):
+        before = time.perf_counter()
+        view.StillRender()
+        stills.append(time.perf_counter() - before)
+    return sorted(stills)[len(stills) // 2]
+
+
+def figures(times, update, release, frames, still):
+    """One drag's figures for the drag benchmarks: its first frame, the median of the others,
+    the release; `release` holds CLOCK_MONOTONIC times of its steps."""
+    frame = sorted(times[1:] or times)[len(times[1:] or times) // 2]
+    return {"first_frame_ms": round(1000.0 * times[0], 1),
+            "frame_ms": round(1000.0 * frame, 2),
+            "frame_over_still": round(frame / still, 2),
+            "first_frame_over_still": round(times[0] / still, 2),
+            "filter_ms": round(1000.0 * update / frames, 2),
+            "release_ms": round(1000.0 * (release["render"] - release["start"]), 1),
+            "release_over_still": round((release["render"] - release["start"]) / still, 2),
+            "release_steps_ms": {step: round(1000.0 * (release[step] - release[last]), 1)
+                                 for last, step in (("start", "event"), ("event", "update"),
+                                                    ("update", "render"))},
+            "release_window": [release["start"], release["render"]],
+            "first_frame_window": release["first_frame_window"]}
