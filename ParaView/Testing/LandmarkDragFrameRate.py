@@ -18,7 +18,6 @@ import json
 import os
 import sys
 import time
-import traceback
 
 
 def warp_with_landmarks(mesh_path, count):
@@ -104,11 +103,5 @@ def main(out):
 
 # Run from the repository's root, or with LAPLACIAN_TESTING_DIR (the GUI's script has no __file__).
 sys.path.insert(0, os.environ.get("LAPLACIAN_TESTING_DIR", os.path.join("ParaView", "Testing")))
-out = open(os.environ["LAPLACIAN_BENCH_OUTPUT"], "w") if "LAPLACIAN_BENCH_OUTPUT" in os.environ else sys.stdout
-status = 1
-try:
-    main(out)
-    status = 0
-except Exception:
-    print(traceback.format_exc(), file=out, flush=True)
-os._exit(status)
+import ViewEvents  # noqa: E402
+ViewEvents.run_benchmark(main)

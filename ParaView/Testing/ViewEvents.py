@@ -108,3 +108,18 @@ def figures(times, update, release, frames, still):
                                                     ("update", "render"))},
             "release_window": [release["start"], release["render"]],
             "first_frame_window": release["first_frame_window"]}
+
+
+def run_benchmark(main):
+    """Runs a GUI benchmark's main(out), out being LAPLACIAN_BENCH_OUTPUT or standard output, and
+    ends the GUI: status 0, or 1 with the traceback printed to out."""
+    import sys
+    import traceback
+    out = open(os.environ["LAPLACIAN_BENCH_OUTPUT"], "w") if "LAPLACIAN_BENCH_OUTPUT" in os.environ else sys.stdout
+    status = 1
+    try:
+        main(out)
+        status = 0
+    except Exception:
+        print(traceback.format_exc(), file=out, flush=True)
+    os._exit(status)
