@@ -287,6 +287,7 @@ lep::SolverSettings vtkLaplacianDeformationFilter::Settings()
   settings.PreserveDetailScale = this->PreserveDetailScale != 0;
   settings.ImplicitFormulation = this->ImplicitFormulation;
   settings.ARAPIterations = this->ARAPIterations;
+  settings.RotationSmoothing = this->RotationSmoothing;
   settings.Convergence = this->Convergence;
   settings.Acceleration = this->Acceleration != 0;
   settings.Extrapolation = this->Extrapolation != 0;
@@ -574,6 +575,7 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
   os << indent << "ImplicitFormulation: "
      << EnumName(this->ImplicitFormulation, { "PerEdge", "Paper" }) << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
+  os << indent << "RotationSmoothing: " << this->RotationSmoothing << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
   os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";

@@ -397,6 +397,18 @@ public:
   vtkGetMacro(ARAPIterations, int);
 
   /**
+   * As-rigid-as-possible mode: smoothed rotations (Levi and Gotsman's SR-ARAP, CGAL's
+   * SRE_ARAP), alpha of the penalty alpha A sum |R_i - R_j|^2 on neighbouring rotations, A the
+   * region's area; 0 to 1000. Neighbouring rings then turn together over a length of about
+   * sqrt(alpha A), which bends a region like an elastic rod rather than at a few kinks; large
+   * alphas approach one rotation for the whole region. CGAL's own alpha is relative to the
+   * whole surface's area and defaults to 0.02. Default 0: plain ARAP, as CGAL's default
+   * (SPOKES_AND_RIMS). Changing it rebuilds the region's system, as the other weights do.
+   */
+  vtkSetClampMacro(RotationSmoothing, double, 0.0, 1000.0);
+  vtkGetMacro(RotationSmoothing, double);
+
+  /**
    * As-rigid-as-possible mode: an update stops early when its iterations lower the energy by
    * less than this fraction of it per iteration, on average over the last three (a drag step:
    * its last iteration); 0 to 1. Default 1e-3.
@@ -661,6 +673,7 @@ protected:
   vtkTypeBool PreserveDetailScale = 1;
   int ImplicitFormulation = IMPLICIT_PER_EDGE;
   int ARAPIterations = 30;
+  double RotationSmoothing = 0.0;
   vtkTypeBool Dragging = 0;
   int DragARAPIterations = 2;
   double Convergence = 1e-3;

@@ -435,6 +435,7 @@ lep::SolverSettings vtkLaplacianLandmarkWarp::Settings(double diagonal) const
   settings.DragARAPIterations = this->DragARAPIterations;
   settings.Bending = this->BendingWeight;
   settings.SplinePrior = this->SplinePriorWeight;
+  settings.RotationSmoothing = this->RotationSmoothing;
   return settings;
 }
 
@@ -521,6 +522,7 @@ void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
   os << indent << "BendingWeight: " << this->BendingWeight << "\n";
   os << indent << "SplinePriorWeight: " << this->SplinePriorWeight << "\n";
+  os << indent << "RotationSmoothing: " << this->RotationSmoothing << "\n";
   os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";

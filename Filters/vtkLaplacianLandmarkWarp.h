@@ -222,6 +222,13 @@ public:
   vtkGetMacro(SplinePriorWeight, double);
 
   /**
+   * As-rigid-as-possible mode: smoothed rotations, alpha as in
+   * vtkLaplacianDeformationFilter::SetRotationSmoothing (0 to 1000). Default 0.
+   */
+  vtkSetClampMacro(RotationSmoothing, double, 0.0, 1000.0);
+  vtkGetMacro(RotationSmoothing, double);
+
+  /**
    * As-rigid-as-possible mode: the most iterations an update (100) and the relative energy
    * decrease an iteration that stops it (1e-4).
    */
@@ -312,6 +319,7 @@ private:
   double LandmarkWeight = 1.0;
   double BendingWeight = 100.0;
   double SplinePriorWeight = 1.0;
+  double RotationSmoothing = 0.0;
   int ARAPIterations = 100;
   double Convergence = 1e-4;
   vtkTypeBool Dragging = 0;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numeric>
 
 namespace LaplacianEditing
 {
@@ -86,6 +87,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   const std::vector<int> patchVertices = this->GrowPatch(mesh, region, patchRow);
   this->WeighEdges(mesh, patchVertices, patchRow, options.Weights, loop);
   this->FindRotationsAroundHandles();
+  this->CoupleRotations(mesh, patchVertices, patchRow, options.RotationSmoothing);
   this->Points = PointConstraints();
   std::string error;
   if (options.Points)
@@ -229,6 +231,80 @@ void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
       this->RestScale += this->Weights[edge] * this->RestEdges[edge].squaredNorm();
       this->RestEdgeSums[i] += this->Weights[edge] * this->RestEdges[edge];
     }
+  }
+}
+
+void AsRigidAsPossibleSolver::CoupleRotations(const SurfaceMesh& mesh,
+  const std::vector<int>& patchVertices, const std::vector<int>& patchRow, double smoothing)
+{
+  this->RotationCoupling.clear();
+  this->ColorOffsets.clear();
+  this->ColoredVertices.clear();
+  if (smoothing <= 0.0)
+  {
+    return;
+  }
+  // The ROI's area: each triangle with an ROI vertex, counted at the first of them.
+  const int n = this->NumberOfROIVertices;
+  const std::vector<Vector3>& p = mesh.GetPositions();
+  double area = 0.0;
+  for (int k = 0; k < n; ++k)
+  {
+    for (const int* t = mesh.TrianglesBegin(patchVertices[k]); t != mesh.TrianglesEnd(patchVertices[k]); ++t)
+    {
+      const std::array<int, 3>& triangle = mesh.GetTriangles()[*t];
+      const bool first = std::none_of(triangle.begin(), triangle.end(), [&](int v) {
+        const int row = patchRow[v];
+        return row >= 0 && row < k;
+      });
+      if (first)
+      {
+        area += 0.5 * (p[triangle[1]] - p[triangle[0]]).cross(p[triangle[2]] - p[triangle[0]]).norm();
+      }
+    }
+  }
+  const double scale = 0.5 * smoothing * area;
+  auto valence = [this](int i) { return this->Offsets[i + 1] - this->Offsets[i]; };
+  this->RotationCoupling.assign(this->Neighbors.size(), 0.0);
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+    {
+      const int j = this->Neighbors[k];
+      if (j < this->NumberOfEnergyVertices)
+      {
+        this->RotationCoupling[k] = scale * (1.0 / valence(i) + 1.0 / valence(j));
+      }
+    }
+  }
+  // Greedy colors, each vertex the first its earlier neighbours leave free, then the vertices
+  // bucketed by color.
+  std::vector<int> colors(this->NumberOfEnergyVertices, 0);
+  int numberOfColors = 0;
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    std::vector<char> taken(numberOfColors + 1, 0);
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+    {
+      if (this->Neighbors[k] < i)
+      {
+        taken[colors[this->Neighbors[k]]] = 1;
+      }
+    }
+    colors[i] = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    numberOfColors = std::max(numberOfColors, colors[i] + 1);
+  }
+  this->ColorOffsets.assign(numberOfColors + 1, 0);
+  for (int color : colors)
+  {
+    ++this->ColorOffsets[color + 1];
+  }
+  std::partial_sum(this->ColorOffsets.begin(), this->ColorOffsets.end(), this->ColorOffsets.begin());
+  std::vector<int> next(this->ColorOffsets.begin(), this->ColorOffsets.end() - 1);
+  this->ColoredVertices.resize(this->NumberOfEnergyVertices);
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    this->ColoredVertices[next[colors[i]]++] = i;
   }
 }
 
@@ -381,6 +457,10 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
   rotations.resize(this->NumberOfEnergyVertices);
   const bool seed = static_cast<int>(quaternions.size()) != this->NumberOfEnergyVertices;
   quaternions.resize(this->NumberOfEnergyVertices);
+  if (!this->RotationCoupling.empty())
+  {
+    return this->RotateCoupled(patch, rotations, quaternions, work, loop, seed);
+  }
   std::vector<double>& residuals = work.Residuals;
   residuals.resize(this->NumberOfEnergyVertices);
   only = seed ? nullptr : only; // rotations with no history are seeded everywhere
@@ -420,6 +500,11 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
       }
     }
   });
+  return this->SumResiduals(residuals);
+}
+
+double AsRigidAsPossibleSolver::SumResiduals(const std::vector<double>& residuals) const
+{
   double energy = 0.0;
   for (double r : residuals)
   {
@@ -443,6 +528,78 @@ Eigen::Matrix3d AsRigidAsPossibleSolver::Deformation(const std::vector<Vector3>&
       this->RestEdgeSums[i].transpose();
   }
   return deformation;
+}
+
+double AsRigidAsPossibleSolver::RotateCoupled(const std::vector<Vector3>& patch,
+  std::vector<Eigen::Matrix3d>& rotations, Quaternions& quaternions, ArapIterate::Workspace& work,
+  const ParallelFor& loop, bool seed) const
+{
+  // The rings' covariances once, seeded rotations where there is no history, then Gauss-Seidel
+  // sweeps a color at a time: no two vertices of a color are neighbours, so each color's
+  // rotations are fitted in parallel, each exactly against its neighbours' latest.
+  const int count = this->NumberOfEnergyVertices;
+  std::vector<Eigen::Matrix3d>& deformations = work.Deformations;
+  deformations.resize(count);
+  std::vector<double>& residuals = work.Residuals;
+  residuals.resize(count);
+  loop(0, count, [&](int first, int last) {
+    for (int i = first; i < last; ++i)
+    {
+      deformations[i] = this->Deformation(patch, i);
+      if (seed)
+      {
+        quaternions[i] = ClosestRotation(deformations[i]);
+        RefineClosestRotation(deformations[i], quaternions[i]);
+      }
+      rotations[i] = quaternions[i].toRotationMatrix();
+    }
+  });
+  for (int sweep = 0; sweep < CoupledSweeps; ++sweep)
+  {
+    for (std::size_t color = 0; color + 1 < this->ColorOffsets.size(); ++color)
+    {
+      loop(this->ColorOffsets[color], this->ColorOffsets[color + 1], [&](int first, int last) {
+        for (int c = first; c < last; ++c)
+        {
+          const int i = this->ColoredVertices[c];
+          Eigen::Matrix3d coupled = deformations[i];
+          for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+          {
+            if (this->RotationCoupling[k] > 0.0)
+            {
+              coupled += this->RotationCoupling[k] * rotations[this->Neighbors[k]];
+            }
+          }
+          if (!RefineClosestRotation(coupled, quaternions[i]))
+          {
+            quaternions[i] = ClosestRotation(coupled);
+            RefineClosestRotation(coupled, quaternions[i]);
+          }
+          rotations[i] = quaternions[i].toRotationMatrix();
+        }
+      });
+    }
+  }
+  loop(0, count, [&](int first, int last) {
+    for (int i = first; i < last; ++i)
+    {
+      residuals[i] = this->Residual(patch, i, rotations[i]) + this->CouplingResidual(rotations, i);
+    }
+  });
+  return this->SumResiduals(residuals);
+}
+
+double AsRigidAsPossibleSolver::CouplingResidual(const std::vector<Eigen::Matrix3d>& rotations, int i) const
+{
+  double residual = 0.0;
+  for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+  {
+    if (this->RotationCoupling[k] > 0.0)
+    {
+      residual += 0.5 * this->RotationCoupling[k] * (rotations[i] - rotations[this->Neighbors[k]]).squaredNorm();
+    }
+  }
+  return residual;
 }
 
 Vector3 AsRigidAsPossibleSolver::DeformedEdgeSum(const std::vector<Vector3>& patch, int i) const

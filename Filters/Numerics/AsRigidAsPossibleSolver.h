@@ -26,6 +26,17 @@
 // bend between points grows with their density (as 1 / spacing^2, so with their number), and
 // the pull, a sum over vertices, with the mesh's resolution; so one weight means the same at any
 // density and resolution.
+//
+// Smoothed rotations (DeformationOptions::RotationSmoothing, Levi and Gotsman, "Smooth Rotation
+// Enhanced As-Rigid-As-Possible Mesh Animation", 2015; CGAL's SRE_ARAP): the energy adds
+// sum over edges beta_ij |R_i - R_j|_F^2, beta_ij = alpha A (1/n_i + 1/n_j) / 2 with A the ROI's
+// area and n the valences, which is CGAL's term for alpha on a region that is the whole surface.
+// The rotations then vary over a length of about sqrt(alpha A) instead of jumping from ring to
+// ring. The local step runs CoupledSweeps Gauss-Seidel sweeps, each rotation fitted exactly
+// against its neighbours' latest, a color of a greedy coloring at a time (in parallel within
+// a color, since no two of its vertices are neighbours): every fit lowers the energy, so it
+// still never rises. Why several sweeps: the couplings spread a rotation a ring per sweep, and
+// the global step is the iteration's cost.
 #ifndef LaplacianEditing_AsRigidAsPossibleSolver_h
 #define LaplacianEditing_AsRigidAsPossibleSolver_h
 
@@ -43,6 +54,8 @@ namespace LaplacianEditing
 {
 /// Iterations the stopping test looks back over.
 constexpr int ConvergenceWindow = 3;
+/// Gauss-Seidel sweeps of a local step with smoothed rotations.
+constexpr int CoupledSweeps = 4;
 
 struct ArapOptions
 {
@@ -92,6 +105,8 @@ struct ArapIterate
     std::vector<Eigen::Matrix3d> Rotations;
     std::vector<Eigen::Matrix3d> CandidateRotations;
     Quaternions CandidateQuaternions;
+    // The rings' covariances, for the sweeps of smoothed rotations.
+    std::vector<Eigen::Matrix3d> Deformations;
     Positions Candidate;
     std::vector<double> Residuals;
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> RightHandSide;
@@ -162,6 +177,9 @@ private:
   void WeighEdges(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
     const std::vector<int>& patchRow, LaplacianWeights type, const ParallelFor& loop);
   void FindRotationsAroundHandles();
+  // The couplings beta_ij of smoothed rotations at `smoothing` (alpha); none at 0.
+  void CoupleRotations(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
+    const std::vector<int>& patchRow, double smoothing);
   std::string ChooseUnknowns(const EditRegion& region);
   Eigen::SparseMatrix<double> AssembleFreeLaplacian(const ParallelFor& loop) const;
   // The spline prior's term in the matrix, if `weight` and the points allow one.
@@ -185,16 +203,24 @@ private:
   void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
   // exact polar decompositions where empty), or of `only` those, the others' rotations and
-  // residuals kept. Returns the energy.
+  // residuals kept (all are redone when rotations are coupled). Returns the energy.
   double Rotate(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
     Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop,
     const std::vector<int>* only = nullptr) const;
   // Vertex i's ring: its deformation (the weighted covariance of its edges, rest against
   // `patch`), and its residual under `rotation`.
   Eigen::Matrix3d Deformation(const std::vector<Vector3>& patch, int i) const;
+  // The local step with smoothed rotations (seeded by exact polar decompositions if `seed`),
+  // and vertex i's share of their coupling energy (half of each of its edges') under
+  // `rotations`.
+  double RotateCoupled(const std::vector<Vector3>& patch, std::vector<Eigen::Matrix3d>& rotations,
+    Quaternions& quaternions, ArapIterate::Workspace& work, const ParallelFor& loop, bool seed) const;
+  double CouplingResidual(const std::vector<Eigen::Matrix3d>& rotations, int i) const;
   // The weighted sum of vertex i's deformed edges (the bending term's s'_i).
   Vector3 DeformedEdgeSum(const std::vector<Vector3>& patch, int i) const;
   double Residual(const std::vector<Vector3>& patch, int i, const Eigen::Matrix3d& rotation) const;
+  // The energy of the residuals, over the rest scale.
+  double SumResiduals(const std::vector<double>& residuals) const;
   // Sets the handle rows to their targets, then the local step at the iterate's points (only
   // around the handles if `aroundHandles`, the other rotations fitting already). Returns the
   // energy.
@@ -221,6 +247,9 @@ private:
   std::vector<double> Weights;
   std::vector<Vector3> RestEdges; // rest position of the vertex minus its neighbour's
   std::vector<Vector3> RestEdgeSums; // per energy vertex, its edges' weighted sum
+  std::vector<double> RotationCoupling; // per edge, beta_ij (0 to the ring's ring); empty: none
+  std::vector<int> ColorOffsets; // the energy vertices by color, for the coupled sweeps
+  std::vector<int> ColoredVertices;
   double RestScale = 0.0;
   // Free unknowns: their ROI rows, and the unknown index of each patch row (-1 if known).
   std::vector<int> FreeRows;

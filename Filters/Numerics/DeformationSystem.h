@@ -62,6 +62,9 @@ struct DeformationOptions
   /// the pull towards the points' thin-plate spline (AsRigidAsPossibleSolver.h); 0, the
   /// default, leaves it out.
   double SplinePrior = 0.0;
+  /// As-rigid-as-possible mode: alpha of smoothed rotations (AsRigidAsPossibleSolver.h, CGAL's
+  /// SRE_ARAP); 0, the default, is plain ARAP, as CGAL's default.
+  double RotationSmoothing = 0.0;
 
   bool operator==(const DeformationOptions& other) const
   {
@@ -72,7 +75,8 @@ struct DeformationOptions
       this->Distributed == other.Distributed &&
       this->LeastSquares == other.LeastSquares && (this->Points != nullptr) == (other.Points != nullptr) &&
       this->PointsVersion == other.PointsVersion && this->PointWeight == other.PointWeight &&
-      this->Bending == other.Bending && this->SplinePrior == other.SplinePrior;
+      this->Bending == other.Bending && this->SplinePrior == other.SplinePrior &&
+      this->RotationSmoothing == other.RotationSmoothing;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };

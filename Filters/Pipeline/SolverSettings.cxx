@@ -24,6 +24,8 @@ DeformationOptions SolverSettings::System(double availableMemory) const
   system.Distributed = this->Distributed;
   system.Bending = this->Bending;
   system.SplinePrior = this->SplinePrior;
+  // Other modes' rigid step fits rotations too, but plainly: the property does not refactor them.
+  system.RotationSmoothing = system.LeastSquares ? 0.0 : this->RotationSmoothing;
   return system;
 }
 

@@ -41,6 +41,8 @@ struct VTKLAPLACIANEDITINGFILTERS_EXPORT SolverSettings
   double Bending = 0.0;
   /// As-rigid-as-possible with points: the spline prior's weight (0: none).
   double SplinePrior = 0.0;
+  /// As-rigid-as-possible: alpha of smoothed rotations (0: plain ARAP).
+  double RotationSmoothing = 0.0;
   /// A drag is going on: each update runs at most DragARAPIterations.
   bool Dragging = false;
   int DragARAPIterations = 2;

@@ -1,7 +1,7 @@
 // The quality of large edits, measured against CGAL 5.5's Surface_mesh_deformation (ARAP) on the
 // same vertex sets; prints one JSON line per edit.
 //
-//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|bend|all] [--picture DIR]
+//   EditQuality DATA_DIR [--edit cactus|twist|armadillo|bend|all] [--picture DIR] [--sre ALPHA]
 //
 // Edits:
 //  - cactus: CGAL's cactus.off with cactus.sel (0 fixed, 1 ROI, 2 handle) and the 70-degree
@@ -22,6 +22,12 @@
 // 50 and 1000 iterations from the rest shape, with the seconds spent. With --picture, writes
 // DIR/<edit>-modes.png: the rest shape, none, explicit (5 iterations), implicit, as rigid as
 // possible, and CGAL ARAP after 1000 iterations, side by side (offscreen; run under Xvfb).
+//
+// --sre ALPHA adds smoothed rotations (RotationSmoothing) at CGAL's alpha: ours at the default
+// iterations ("sre") and run out ("sre_converged", 20,000 iterations at most), and CGAL's
+// SRE_ARAP after 1, 5, 50, 1000 and 5000 iterations, each with its RMS distance over the ROI
+// from our run-out result, in fractions of the diagonal. CGAL's alpha is relative to the whole
+// surface's area and ours to the region's, so ours is given alpha times their ratio.
 #include "EditingScene.h"
 #include "ReferenceEdits.h"
 
@@ -70,6 +76,7 @@ struct Mode
   double Convergence = 1e-3;
   bool Accelerate = true;
   bool Linear = false; // implicit mode without its rigid step
+  double RotationSmoothing = 0.0;
 };
 
 // The panels of --picture: copies of the results, in order.
@@ -83,7 +90,8 @@ vtkSmartPointer<vtkPolyData> Copy(vtkPolyData* mesh)
 }
 
 std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured,
-  const Mode& mode, double* energy = nullptr, Panels* panels = nullptr)
+  const Mode& mode, double* energy = nullptr, Panels* panels = nullptr,
+  std::vector<le::Vector3>* points = nullptr)
 {
   vtkNew<vtkLaplacianDeformationFilter> filter;
   ReferenceEdits::Configure(edit, filter);
@@ -94,6 +102,7 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
   filter->SetConvergence(mode.Convergence);
   filter->SetAcceleration(mode.Accelerate);
   filter->SetPreserveDetailScale(!mode.Linear);
+  filter->SetRotationSmoothing(mode.RotationSmoothing);
   if (mode.Rotation == vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE)
   {
     filter->SetLaplacianWeightsToCotangent(); // as CGAL's ARAP and the measure
@@ -113,6 +122,10 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
     const auto deformed = ReferenceEdits::PointsOf(filter->GetOutput());
     *energy = le::MeasureEdit(measured.Mesh, measured.Region, deformed).Energy;
   }
+  if (points)
+  {
+    *points = ReferenceEdits::PointsOf(filter->GetOutput());
+  }
   std::ostringstream json;
   json << std::setprecision(5) << "\"" << mode.Name << "\": {"
        << measured.Json(ReferenceEdits::PointsOf(filter->GetOutput())) << ", \"free_motion_ratio\": "
@@ -124,16 +137,20 @@ std::string MeasureMode(const ReferenceEdits::Edit& edit, const ReferenceEdits::
 }
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
-// CGAL ARAP from the rest shape: the measures after each iteration count, with the seconds.
+// CGAL ARAP (or, with a reference, SRE_ARAP at `alpha`) from the rest shape: the measures
+// after each iteration count, with the seconds, and the distance from `reference` if given.
+template <CGAL::Deformation_algorithm_tag Technique>
 std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::Measured& measured,
-  double target, Panels* panels)
+  double target, Panels* panels, const std::vector<le::Vector3>* reference = nullptr,
+  double alpha = 0.0)
 {
   using namespace CGALSurface;
-  using Deformation = CGAL::Surface_mesh_deformation<Mesh>;
+  using Deformation = CGAL::Surface_mesh_deformation<Mesh, CGAL::Default, CGAL::Default, Technique>;
 
   Mesh surface;
   const std::vector<Vertex> vertices = CGALSurface::Build(edit.Mesh, surface);
   Deformation deformation(surface);
+  deformation.set_sre_arap_alpha(alpha);
   for (vtkIdType i = 0; i < edit.Labels->GetNumberOfTuples(); ++i)
   {
     if (edit.Labels->GetValue(i) > 0)
@@ -153,18 +170,21 @@ std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::
   const bool ready = deformation.preprocess();
   const double preprocess = SecondsSince(start);
   std::ostringstream json;
-  json << std::setprecision(5) << "\"cgal_arap\": {\"preprocess_ok\": " << (ready ? "true" : "false")
+  json << std::setprecision(5) << (reference ? "\"cgal_sre_arap\"" : "\"cgal_arap\"")
+       << ": {\"preprocess_ok\": " << (ready ? "true" : "false")
        << ", \"preprocess_seconds\": " << preprocess;
   // One iteration at a time (only deform() is timed): the measures after 1, 5, 50 and 1000
   // iterations, and when CGAL first reaches `target` (our ARAP mode's energy).
   double seconds = 0.0;
   bool reached = false;
-  for (int iteration = 1; iteration <= 1000; ++iteration)
+  const int last = reference ? 5000 : 1000;
+  for (int iteration = 1; iteration <= last; ++iteration)
   {
     start = Clock::now();
     deformation.deform(1, 0.0); // continues from the current result
     seconds += SecondsSince(start);
-    const bool report = iteration == 1 || iteration == 5 || iteration == 50 || iteration == 1000;
+    const bool report = iteration == 1 || iteration == 5 || iteration == 50 || iteration == 1000 ||
+      iteration == last;
     if (!report && (reached || iteration % 5 != 0))
     {
       continue; // the energy is checked every fifth iteration until reached
@@ -182,7 +202,7 @@ std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::
       json << ", \"reaches_arap_energy\": {\"iterations\": " << iteration
            << ", \"deform_seconds\": " << seconds << "}";
     }
-    if (iteration == 1000 && panels && !panels->empty())
+    if (iteration == 1000 && !reference && panels && !panels->empty())
     {
       // The last panel (our ARAP result) with CGAL's points, so that it keeps the roles.
       vtkSmartPointer<vtkPolyData> cgal = Copy(panels->back());
@@ -195,8 +215,12 @@ std::string MeasureCGAL(const ReferenceEdits::Edit& edit, const ReferenceEdits::
     if (report)
     {
       json << ", \"" << iteration << "\": {" << measured.Json(deformed)
-           << ", \"free_motion_ratio\": " << measured.FreeMotionRatio(deformed, edit.Labels)
-           << ", \"deform_seconds\": " << seconds << "}";
+           << ", \"free_motion_ratio\": " << measured.FreeMotionRatio(deformed, edit.Labels);
+      if (reference)
+      {
+        json << ", \"distance\": " << measured.Distance(deformed, *reference) / edit.Mesh->GetLength();
+      }
+      json << ", \"deform_seconds\": " << seconds << "}";
     }
   }
   json << "}";
@@ -211,14 +235,23 @@ int main(int argc, char* argv[])
   {
     (argc < 2 ? std::cerr : std::cout)
       << "usage: " << argv[0]
-      << " DATA_DIR [--edit cactus|twist|armadillo|bend|all] [--picture DIR]\n";
+      << " DATA_DIR [--edit cactus|twist|armadillo|bend|all] [--picture DIR] [--sre ALPHA]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string data = argv[1];
   std::string which = "all", pictures;
+  double alpha = 0.0;
   for (int i = 2; i + 1 < argc; i += 2)
   {
-    (std::string(argv[i]) == "--picture" ? pictures : which) = argv[i + 1];
+    const std::string option = argv[i];
+    if (option == "--sre")
+    {
+      alpha = std::stod(argv[i + 1]);
+    }
+    else
+    {
+      (option == "--picture" ? pictures : which) = argv[i + 1];
+    }
   }
   const Mode modes[] = { { "none", vtkLaplacianDeformationFilter::ROTATION_NONE, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
     { "explicit1", vtkLaplacianDeformationFilter::ROTATION_EXPLICIT, 1, vtkLaplacianDeformationFilter::IMPLICIT_PER_EDGE },
@@ -260,8 +293,25 @@ int main(int argc, char* argv[])
                      pictures.empty() || !shown ? nullptr : &panels);
     }
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
-    std::cout << ", " << MeasureCGAL(edit, measured, arapEnergy, pictures.empty() ? nullptr : &panels);
+    std::cout << ", "
+              << MeasureCGAL<CGAL::SPOKES_AND_RIMS>(
+                   edit, measured, arapEnergy, pictures.empty() ? nullptr : &panels);
 #endif
+    if (alpha > 0.0)
+    {
+      Mode smoothed = { "sre", vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE, 1, 0 };
+      smoothed.RotationSmoothing = alpha * measured.Area(true) / measured.Area(false);
+      std::cout << ", " << MeasureMode(edit, measured, smoothed);
+      smoothed.Name = "sre_converged";
+      smoothed.ARAPIterations = 20000;
+      smoothed.Convergence = 1e-9;
+      std::vector<le::Vector3> converged;
+      std::cout << ", " << MeasureMode(edit, measured, smoothed, nullptr, nullptr, &converged);
+#ifdef LAPLACIAN_EDITING_HAS_CGAL
+      std::cout << ", "
+                << MeasureCGAL<CGAL::SRE_ARAP>(edit, measured, 0.0, nullptr, &converged, alpha);
+#endif
+    }
     std::cout << "}" << std::endl;
     if (!pictures.empty())
     {

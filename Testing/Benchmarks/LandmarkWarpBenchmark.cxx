@@ -4,16 +4,16 @@
 //
 //   LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]
 //     [--landmarks 100,300,1000,10000] [--tps-max N] [--tps-basis r2logr,r]
-//     [--modes arap,none,explicit,implicit] [--bending W] [--spline-prior W] [--drags N]
-//     [--draws N]
+//     [--modes arap,none,explicit,implicit] [--bending W] [--spline-prior W]
+//     [--rotation-smoothing A] [--drags N] [--draws N]
 //
 // Landmarks are random points on the surface (inside triangles), their targets the known
 // motion of them. For each method: the root-mean-square distance of every vertex from the true
 // shape and the largest drift of the part that should stay, both in fractions of the diagonal,
 // and the seconds the warp took (a fresh filter: binding, factorization and solve). TPS runs up
 // to --tps-max landmarks (1000; its time grows with the cube of the count), with VTK's default
-// kernel (r2logr) or the 3D one (r). --bending and --spline-prior set the warp's
-// BendingWeight and SplinePriorWeight (their defaults: 100, 1). After the largest count, --drags (20) updates move one landmark with the factorization
+// kernel (r2logr) or the 3D one (r). --bending, --spline-prior and --rotation-smoothing set the
+// warp's BendingWeight, SplinePriorWeight and RotationSmoothing (their defaults: 100, 1, 0). After the largest count, --drags (20) updates move one landmark with the factorization
 // reused (Dragging on): the median seconds an update and the factorizations in all. --draws
 // repeats each count with other random landmarks (seeds 3, 4, ...), each line saying its draw.
 #include "KnownWarps.h"
@@ -151,21 +151,33 @@ void RunThinPlateSpline(const KnownWarps::Warp& warp, vtkPoints* sources, vtkPoi
     seconds, ", \"draw\": " + std::to_string(draw));
 }
 
+// The warp's weights the command line sets; negative: the filter's default.
+struct WarpWeights
+{
+  double Bending = -1.0;
+  double SplinePrior = -1.0;
+  double RotationSmoothing = -1.0;
+};
+
 vtkSmartPointer<vtkLaplacianLandmarkWarp> RunWarp(const KnownWarps::Warp& warp, vtkPoints* sources,
-  vtkPoints* targets, const std::string& mode, double bending, double splinePrior, int draw)
+  vtkPoints* targets, const std::string& mode, const WarpWeights& weights, int draw)
 {
   auto filter = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
   filter->SetInputData(warp.Mesh);
   filter->SetSourceLandmarks(sources);
   filter->SetTargetLandmarks(targets);
   filter->SetRotationMode(ModeNamed(mode));
-  if (bending >= 0.0)
+  if (weights.Bending >= 0.0)
   {
-    filter->SetBendingWeight(bending);
+    filter->SetBendingWeight(weights.Bending);
   }
-  if (splinePrior >= 0.0)
+  if (weights.SplinePrior >= 0.0)
   {
-    filter->SetSplinePriorWeight(splinePrior);
+    filter->SetSplinePriorWeight(weights.SplinePrior);
+  }
+  if (weights.RotationSmoothing >= 0.0)
+  {
+    filter->SetRotationSmoothing(weights.RotationSmoothing);
   }
   const auto start = Clock::now();
   filter->Update();
@@ -218,7 +230,7 @@ int main(int argc, char* argv[])
     std::cout << "usage: LandmarkWarpBenchmark DATA_DIR [--warp articulated|hinge|bend|all]\n"
                  "  [--landmarks 100,300,1000,10000] [--tps-max N] "
                  "[--tps-basis r2logr,r] [--modes arap,none,explicit,implicit] [--bending W] "
-                 "[--spline-prior W] [--drags N] [--draws N]\n";
+                 "[--spline-prior W] [--rotation-smoothing A] [--drags N] [--draws N]\n";
     return argc < 2 ? EXIT_FAILURE : EXIT_SUCCESS;
   }
   const std::string dataDir = argv[1];
@@ -227,7 +239,7 @@ int main(int argc, char* argv[])
   vtkIdType tpsMax = 1000;
   int drags = 20;
   int draws = 1;
-  double bending = -1.0, splinePrior = -1.0; // the filter's defaults
+  WarpWeights weights;
   for (int a = 2; a + 1 < argc; a += 2)
   {
     const std::string option = argv[a], value = argv[a + 1];
@@ -253,11 +265,15 @@ int main(int argc, char* argv[])
     }
     else if (option == "--bending")
     {
-      bending = std::stod(value);
+      weights.Bending = std::stod(value);
     }
     else if (option == "--spline-prior")
     {
-      splinePrior = std::stod(value);
+      weights.SplinePrior = std::stod(value);
+    }
+    else if (option == "--rotation-smoothing")
+    {
+      weights.RotationSmoothing = std::stod(value);
     }
     else if (option == "--drags")
     {
@@ -302,7 +318,7 @@ int main(int argc, char* argv[])
         }
         for (const auto& mode : Split(modes))
         {
-          last = RunWarp(warp, sources, targets, mode, bending, splinePrior, draw);
+          last = RunWarp(warp, sources, targets, mode, weights, draw);
           lastTargets = targets;
         }
       }

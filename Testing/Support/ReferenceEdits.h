@@ -303,6 +303,37 @@ struct Measured
     return handle > 0.0 ? free / handle : 0.0;
   }
 
+  // The area of the triangles with a region vertex (all of them if `wholeSurface`).
+  double Area(bool wholeSurface) const
+  {
+    std::vector<char> inRegion(this->Mesh.GetNumberOfVertices(), wholeSurface ? 1 : 0);
+    for (int v : this->Region)
+    {
+      inRegion[v] = 1;
+    }
+    const std::vector<le::Vector3>& p = this->Mesh.GetPositions();
+    double area = 0.0;
+    for (const std::array<int, 3>& t : this->Mesh.GetTriangles())
+    {
+      if (inRegion[t[0]] || inRegion[t[1]] || inRegion[t[2]])
+      {
+        area += 0.5 * (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm();
+      }
+    }
+    return area;
+  }
+
+  // The root-mean-square distance between two results over the region.
+  double Distance(const std::vector<le::Vector3>& a, const std::vector<le::Vector3>& b) const
+  {
+    double sum = 0.0;
+    for (int v : this->Region)
+    {
+      sum += (a[v] - b[v]).squaredNorm();
+    }
+    return std::sqrt(sum / this->Region.size());
+  }
+
   std::string Json(const std::vector<le::Vector3>& deformed) const
   {
     const le::EditMeasures measures = le::MeasureEdit(this->Mesh, this->Region, deformed);
