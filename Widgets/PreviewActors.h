@@ -10,6 +10,7 @@
 #ifndef LaplacianEditing_Widgets_PreviewActors_h
 #define LaplacianEditing_Widgets_PreviewActors_h
 
+#include "PreviewPartMapper.h"
 #include "vtkNew.h"
 #include "vtkWeakPointer.h"
 
@@ -17,7 +18,6 @@
 
 class vtkActor;
 class vtkLaplacianDragPreview;
-class vtkPolyDataMapper;
 class vtkRenderer;
 
 namespace LaplacianEditing
@@ -47,7 +47,7 @@ private:
   static vtkActor* FindConsumer(vtkRenderer* renderer, vtkLaplacianDragPreview* preview);
   void CopyLook(vtkActor* consumer);
 
-  std::array<vtkNew<vtkPolyDataMapper>, 2> Mappers;
+  std::array<vtkNew<PreviewPartMapper>, 2> Mappers;
   std::array<vtkNew<vtkActor>, 2> Parts;
   vtkWeakPointer<vtkActor> Consumer;
   vtkWeakPointer<vtkRenderer> Renderer;

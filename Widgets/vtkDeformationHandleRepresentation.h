@@ -245,6 +245,8 @@ protected:
   vtkNew<vtkPolyDataMapper> ROIMapper;
   vtkNew<vtkActor> ROIActor;
   vtkNew<vtkCellPicker> Picker; // the sphere and the rings
+  // What the shapes were last built for: the radii, the frame's axes and the view's direction.
+  std::array<double, 14> ShapeKey = {};
   vtkProperty* HandleProperty;
   vtkProperty* SelectedHandleProperty;
   vtkNew<vtkProperty> RingProperties[4];

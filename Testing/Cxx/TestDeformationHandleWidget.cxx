@@ -19,6 +19,8 @@
 #include "vtkDeformationHandleRepresentation.h"
 #include "vtkDeformationHandleWidget.h"
 #include "vtkDeformationPreviewController.h"
+#include "PreviewPartMapper.h"
+#include "vtkActorCollection.h"
 #include "vtkLaplacianVolumeDeformationFilter.h"
 
 #include "vtkCallbackCommand.h"
@@ -921,7 +923,8 @@ int PreviewDrawsWhatTheUpdateDraws()
 {
   // A representation whose motion is previewed, as ParaView's panel drives one: the controller
   // beside it, the motion set as its properties, the pipeline left alone until the motion is
-  // applied.
+  // applied. Along a drag of four frames, each part's index buffers are built once: only the
+  // cells shape them (VTK's own key would rebuild them at every move of the points).
   Scene scene;
   vtkNew<vtkDeformationHandleRepresentation> rep;
   vtkNew<vtkDeformationPreviewController> preview;
@@ -941,11 +944,36 @@ int PreviewDrawsWhatTheUpdateDraws()
 
   preview->SetFilter(scene.Filter);
   preview->PreviewingOn();
+  for (int frame = 1; frame <= 3; ++frame)
+  {
+    rep->SetTranslation(0.0, -0.0125 * frame, 0.03 * frame);
+    rep->SetRotationAngles(5.0 * frame, 0.0, 0.0);
+    scene.Window->Render();
+  }
   rep->SetTranslation(0.0, -0.05, 0.12);
   rep->SetRotationAngles(20.0, 0.0, 0.0);
   Check(preview->IsPreviewShown(), "the preview shows");
   Check(!scene.SurfaceActor()->GetVisibility(), "the surface's actor is hidden while previewing");
   const std::vector<unsigned char> previewed = Frame(scene.Window);
+  std::vector<int> indexBuilds;
+  vtkActorCollection* actors = scene.Renderer->GetActors(); // rebuilt at each call
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    if (auto* part = LaplacianEditing::Widgets::PreviewPartMapper::SafeDownCast(actor->GetMapper()))
+    {
+      indexBuilds.push_back(part->GetNumberOfIndexBuilds());
+    }
+  }
+  std::cout << "index buffer builds of the parts over four frames:";
+  for (int builds : indexBuilds)
+  {
+    std::cout << " " << builds;
+  }
+  std::cout << "\n";
+  Check(indexBuilds == std::vector<int>{ 1, 1 },
+    "each part's index buffers are built once over the drag's four frames");
   Check(updates == 0, "previewing updates nothing (" + std::to_string(updates) + " updates)");
   rep->VisibilityOff();
   Check(!preview->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
