@@ -69,6 +69,11 @@ private:
     vtkMTimeType SourceTime = 0;
     std::vector<vtkIdType> Written;
     std::uint64_t Key = 0;
+    // The extremes of the tuples outside a set that changes (CachedRanges in the source), and
+    // that set: measured once for a region, they keep the cached ranges when its writes reach an
+    // extreme.
+    std::vector<std::vector<double>> Unchanged;
+    std::vector<vtkIdType> UnchangedOutside;
     vtkIdType LastUse = 0;
     bool IsFree(const Holders& pipeline) const;
   };
