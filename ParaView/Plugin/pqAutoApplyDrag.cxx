@@ -16,30 +16,45 @@ bool pqAutoApplyDrag::begin(vtkSMProxy* filter, pqView* view)
   {
     return false;
   }
+  this->resumeRendering(); // held since an earlier drag
   this->Filter = filter;
   this->View = view;
   this->SavedRenderOnInteraction = vtkSMPropertyHelper(property).GetAsInt();
   vtkSMPropertyHelper(property).Set(0);
   view->getViewProxy()->UpdateVTKObjects();
   pqAutoApplyDrag::setDragging(filter, true);
+  this->Active = true;
   return true;
 }
 
-bool pqAutoApplyDrag::end()
+bool pqAutoApplyDrag::end(bool holdRendering)
 {
-  if (!this->isActive())
+  if (!this->Active)
   {
     return false;
   }
   pqAutoApplyDrag::setDragging(this->Filter, false);
-  if (this->View)
+  this->Active = false;
+  if (!holdRendering)
+  {
+    this->resumeRendering();
+  }
+  return true;
+}
+
+void pqAutoApplyDrag::resumeRendering()
+{
+  if (this->Active)
+  {
+    return; // the drag holds them off until it ends
+  }
+  if (this->View && this->SavedRenderOnInteraction >= 0)
   {
     vtkSMPropertyHelper(this->View->getViewProxy(), "EnableRenderOnInteraction")
       .Set(this->SavedRenderOnInteraction);
     this->View->getViewProxy()->UpdateVTKObjects();
   }
   this->SavedRenderOnInteraction = -1;
-  return true;
 }
 
 void pqAutoApplyDrag::setDragging(vtkSMProxy* filter, bool dragging)

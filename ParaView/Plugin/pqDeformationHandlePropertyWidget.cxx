@@ -535,15 +535,17 @@ void pqDeformationHandlePropertyWidget::beginAutoApplyDrag(bool preview)
 
 void pqDeformationHandlePropertyWidget::endAutoApplyDrag()
 {
-  if (!this->Drag.end())
+  // Auto Apply applies the drag's values and updates the pipeline once, settled (Dragging is
+  // off); that update ends the preview, so that no frame shows the surface of before the drag,
+  // and nothing marks the pipeline before it. Until then the view does not render the release:
+  // the update's render draws the result.
+  const bool updateComing = this->Previewing && this->hasUnappliedMotion();
+  if (!this->Drag.end(updateComing))
   {
     return;
   }
-  if (this->Previewing && this->hasUnappliedMotion())
+  if (updateComing)
   {
-    // Auto Apply applies the drag's values and updates the pipeline once, settled (Dragging
-    // is off); that update ends the preview, so that no frame shows the surface of before
-    // the drag, and nothing marks the pipeline before it.
     this->PreviewUntilUpdate = true;
     return;
   }
@@ -580,6 +582,7 @@ void pqDeformationHandlePropertyWidget::endPreview()
   }
   this->Previewing = false;
   this->PreviewUntilUpdate = false;
+  this->Drag.resumeRendering();
 }
 
 void pqDeformationHandlePropertyWidget::rememberEdit()

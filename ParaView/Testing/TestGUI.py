@@ -52,6 +52,7 @@ try:
 
     dragging = []  # the filter's Dragging after each move of the last drag
     previewed = []  # whether the handle widget's preview showed, after each move
+    released = [0]  # the renders of the last drag's release
 
     def drag(path, steps=12, before_release=None):
         """Returns the number of renders during the moves."""
@@ -69,7 +70,9 @@ try:
         during = renders[0]
         if before_release:
             before_release()
+        before = renders[0]
         send("LeftButtonReleaseEvent", path(1.0))
+        released[0] = renders[0] - before
         return during
 
     def unchecked(name):
@@ -121,8 +124,9 @@ try:
     during = drag(lambda t: (at[0], at[1] + 40.0 * t),
                   before_release=lambda: SaveScreenshot(output + ".preview.png", view, ImageResolution=[600, 500]))
     settings.AutoApply = 0
-    check(during == 0 and view.GetProperty("EnableRenderOnInteraction").GetData() == 1,
-          f"with Auto Apply, the drag leaves rendering to it ({during} renders), then restores the view's")
+    check(during == 0 and released[0] == 0 and view.GetProperty("EnableRenderOnInteraction").GetData() == 0,
+          f"with Auto Apply, the drag leaves rendering to it ({during} renders), and so does the release "
+          f"({released[0]} renders), the preview showing until the update that applies the drag")
     check(dragging == [1] * 12 and info("Dragging") == 0,
           f"and turns the filter's Dragging on during it ({dragging}), off after it")
     check(previewed == [1] * 12, f"the widget's preview draws every move ({previewed})")
@@ -135,6 +139,9 @@ try:
     say(f"after the drag: centre {unchecked('HandleCenter')}, radii {unchecked('HandleRadius')} "
         f"{unchecked('ROIRadius')}, translation {translation}")
     apply()
+    check(view.GetProperty("EnableRenderOnInteraction").GetData() == 1 and not gui.handle_widgets(view)[0]
+          .GetProperty("Previewing").GetElement(0),
+          "that update ends the preview and gives the view back its renders on interaction")
     after = handle_points_center()
     shift = [a - b for a, b in zip(after, before)]
     expected = [m - c for m, c in zip(moved, center)]
