@@ -67,44 +67,28 @@ def edit(triangles, mesh_path, fraction, mode):
 def drag(deform, view, frames):
     """Drags the handle up by 2 pixels a frame; returns each frame's seconds, those of the
     pipeline updates among them, of the release, and whether the preview drew the drag."""
-    import paraview.simple as simple
     import ViewEvents as gui
     widget = gui.handle_widgets(view)[0]
-    events = gui.ViewEvents(view)
-    x, y = events.display([c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)])
+    at = gui.ViewEvents(view).display(
+        [c + t for c, t in zip(deform.HandleCenter, deform.HandleTranslation)])
+    previewed = [True]
 
-    def send(name, y_now):
-        events.send(name, (x, y_now))
-
-    simple.GetSettingsProxy("GeneralSettings").AutoApply = 1
-    send("MouseMoveEvent", y)
-    send("LeftButtonPressEvent", y)
-    times, update, previewed = [], 0.0, True
-    first = time.monotonic()
-    for frame in range(1, frames + 1):
-        start = time.perf_counter()
-        send("MouseMoveEvent", y + 2 * frame)
+    def apply_move():
         widget.UpdatePropertyInformation()
-        previewed = previewed and widget.GetProperty("PreviewShownInfo").GetElement(0) == 1
-        if not previewed:
-            deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")  # Auto Apply
-            before = time.perf_counter()
-            deform.UpdatePipeline()
-            update += time.perf_counter() - before
-        simple.Render(view)
-        times.append(time.perf_counter() - start)
-        if frame == 1:
-            release = {"first_frame_window": [first, time.monotonic()]}
-    # The release, in its steps (and their CLOCK_MONOTONIC times, to cut a `perf record -k mono`).
-    release["start"] = time.monotonic()
-    send("LeftButtonReleaseEvent", y + 2 * frames)
-    deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")  # Auto Apply, settled
-    release["event"] = time.monotonic()
-    deform.UpdatePipeline()
-    release["update"] = time.monotonic()
-    simple.Render(view)
-    release["render"] = time.monotonic()
-    return times, update, release, previewed
+        previewed[0] = previewed[0] and widget.GetProperty("PreviewShownInfo").GetElement(0) == 1
+        if previewed[0]:
+            return 0.0
+        deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")  # Auto Apply
+        before = time.perf_counter()
+        deform.UpdatePipeline()
+        return time.perf_counter() - before
+
+    def apply_release():  # Auto Apply, settled
+        deform.HandleTranslation = gui.unchecked(deform, "HandleTranslation")
+
+    times, update, release = gui.timed_drag(view, at, frames, apply_move, apply_release,
+                                            deform.UpdatePipeline)
+    return times, update, release, previewed[0]
 
 
 def main(out):

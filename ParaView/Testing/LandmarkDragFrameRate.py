@@ -54,7 +54,6 @@ def warp_with_landmarks(mesh_path, count):
 
 
 def main(out):
-    import paraview.simple as simple
     import ViewEvents as gui
     args = os.environ["LAPLACIAN_BENCH"].split()
     mesh_path, count = args[0], int(args[1])
@@ -67,32 +66,16 @@ def main(out):
         return warp.GetProperty(name).SMProperty.GetElement(0)
 
     factorizations = info("NumberOfFactorizations")
-    events = gui.ViewEvents(view)
-    x, y = events.display(target)
-    simple.GetSettingsProxy("GeneralSettings").AutoApply = 1
-    events.send("MouseMoveEvent", (x, y))
-    events.send("LeftButtonPressEvent", (x, y))
-    times, update = [], 0.0
-    first = time.monotonic()
-    release = {}
-    for frame in range(1, frames + 1):
-        start = time.perf_counter()
-        events.send("MouseMoveEvent", (x, y + 2 * frame))
+
+    def apply_move():
         warp.MovedTargets = gui.unchecked(warp, "MovedTargets")  # Auto Apply
         before = time.perf_counter()
         warp.UpdatePipeline()
-        update += time.perf_counter() - before
-        simple.Render(view)
-        times.append(time.perf_counter() - start)
-        if frame == 1:
-            release["first_frame_window"] = [first, time.monotonic()]
-    release["start"] = time.monotonic()
-    events.send("LeftButtonReleaseEvent", (x, y + 2 * frames))
-    release["event"] = time.monotonic()
-    warp.UpdatePipeline()  # settled: the release turned Dragging off
-    release["update"] = time.monotonic()
-    simple.Render(view)
-    release["render"] = time.monotonic()
+        return time.perf_counter() - before
+
+    # The release turned Dragging off: the update settles the shape.
+    times, update, release = gui.timed_drag(view, gui.ViewEvents(view).display(target), frames,
+                                            apply_move, lambda: None, warp.UpdatePipeline)
     result = {"mesh": os.path.basename(mesh_path), "landmarks": count, "frames": frames,
               "still_ms": round(1000.0 * still, 2)}
     result.update(gui.figures(times, update, release, frames, still))

@@ -92,6 +92,40 @@ def still_render_seconds(view):
     return sorted(stills)[len(stills) // 2]
 
 
+def timed_drag(view, at, frames, apply_move, apply_release, update):
+    """A drag benchmark's drag: from display point `at`, 2 pixels up a frame, with Auto Apply
+    on. Each frame sends the move, calls apply_move() (which returns the seconds it spent in
+    pipeline updates) and renders; the release sends its event, calls apply_release(), then
+    update(), and renders. Returns each frame's seconds, the updates' seconds among them, and
+    the release's CLOCK_MONOTONIC times by step (with the first frame's window), for figures()
+    and to cut a `perf record -k mono`."""
+    import paraview.simple as simple
+    events = ViewEvents(view)
+    x, y = at
+    simple.GetSettingsProxy("GeneralSettings").AutoApply = 1
+    events.send("MouseMoveEvent", (x, y))
+    events.send("LeftButtonPressEvent", (x, y))
+    times, updating, release = [], 0.0, {}
+    first = time.monotonic()
+    for frame in range(1, frames + 1):
+        start = time.perf_counter()
+        events.send("MouseMoveEvent", (x, y + 2 * frame))
+        updating += apply_move()
+        simple.Render(view)
+        times.append(time.perf_counter() - start)
+        if frame == 1:
+            release["first_frame_window"] = [first, time.monotonic()]
+    release["start"] = time.monotonic()
+    events.send("LeftButtonReleaseEvent", (x, y + 2 * frames))
+    apply_release()
+    release["event"] = time.monotonic()
+    update()
+    release["update"] = time.monotonic()
+    simple.Render(view)
+    release["render"] = time.monotonic()
+    return times, updating, release
+
+
 def figures(times, update, release, frames, still):
     """One drag's figures for the drag benchmarks: its first frame, the median of the others,
     the release; `release` holds CLOCK_MONOTONIC times of its steps."""
