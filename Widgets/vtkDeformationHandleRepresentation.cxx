@@ -490,16 +490,18 @@ void vtkDeformationHandleRepresentation::BuildRepresentation()
   {
     return;
   }
-  // The shapes sit at the origin and their actors at the centre, so that a drag moves the
-  // actors and rebuilds (and uploads) nothing: rebuilt at every move, the four tubes and two
-  // spheres cost 1.5 ms of a ParaView drag frame, and as much again to upload.
+  // The shapes sit at the origin (their sources' default centre) and their actors at the
+  // centre, so that a drag moves the actors and rebuilds (and uploads) nothing: rebuilt at
+  // every move, the four tubes and two spheres cost 1.5 ms of a ParaView drag frame, and as much
+  // again to upload. The axis of a constrained move is drawn where it is, in world coordinates.
   double center[3], view[3];
   this->GetCurrentCenter(center);
-  for (vtkActor* actor : { this->HandleActor.Get(), this->RingActors[AxisX].Get(),
-         this->RingActors[AxisY].Get(), this->RingActors[AxisZ].Get(),
-         this->RingActors[ViewAxis].Get(), this->ROIActor.Get() })
+  for (vtkActor* actor : this->Actors())
   {
-    actor->SetPosition(center);
+    if (actor != this->AxisActor)
+    {
+      actor->SetPosition(center);
+    }
   }
   camera->GetDirectionOfProjection(view);
   const std::array<double, 14> shape = { this->HandleRadius, this->ROIRadius, this->Rotation[0][0],
@@ -509,20 +511,16 @@ void vtkDeformationHandleRepresentation::BuildRepresentation()
   if (shape != this->ShapeKey)
   {
     this->ShapeKey = shape;
-    const double origin[3] = { 0.0, 0.0, 0.0 };
-    this->HandleSource->SetCenter(origin);
     this->HandleSource->SetRadius(this->HandleRadius);
     for (int axis = AxisX; axis <= ViewAxis; ++axis)
     {
       double ringNormal[3];
       this->GetRotationAxisDirection(axis, ringNormal);
-      this->RingSources[axis]->SetCenter(origin);
       this->RingSources[axis]->SetNormal(ringNormal);
       this->RingSources[axis]->SetRadius((axis == ViewAxis ? 1.4 : 1.15) * this->HandleRadius);
       this->RingTubes[axis]->SetRadius(0.06 * this->HandleRadius);
       this->RingTubes[axis]->Update();
     }
-    this->ROISource->SetCenter(origin);
     this->ROISource->SetRadius(this->ROIRadius);
     // The pickers read the mappers' inputs: bring them up to date now, not at the next render.
     this->HandleSource->Update();

@@ -31,7 +31,6 @@ public:
   /// Gives the view back the renders on interaction that end(true) held off; nothing during a
   /// drag or otherwise.
   void resumeRendering();
-  bool isActive() const { return this->Active; }
 
 private:
   static void setDragging(vtkSMProxy* filter, bool dragging);
