@@ -10,7 +10,8 @@
 // two handle groups with a widget each, commits and undoes; an eleventh drags in the
 // as-rigid-as-possible mode, a few iterations a frame, and settles the shape on the release; a
 // twelfth previews a motion in place of the surface's actor and draws what the update draws; a
-// thirteenth drags the boundary of a volume mesh, its interior following.
+// thirteenth drags the boundary of a volume mesh, its interior following; a fourteenth draws
+// the same surfaces through the preview's mapper and VTK's and compares the pixels.
 // Usage: TestDeformationHandleWidget <case> [-V <baseline.png> -T <temp folder>]
 #include "EditingScene.h"
 #include "FilterTestHelpers.h"
@@ -25,6 +26,8 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataSetMapper.h"
 #include "vtkEvent.h"
 #include "vtkIntArray.h"
@@ -996,6 +999,65 @@ int PreviewDrawsWhatTheUpdateDraws()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int PartMapperDrawsWhatVTKDraws()
+{
+  // The preview's mapper builds its own index buffers for a surface of triangles: the
+  // connectivity uploaded whole. Drawn through it and through VTK's mapper, the same data gives
+  // the same pixels: with 32- and 64-bit ids, coloured by cell (primitive ids map to cells),
+  // and where VTK builds the buffers (edges shown, wireframe, a quad), back and forth.
+  Scene scene;
+  vtkSmartPointer<vtkPolyData> surface = MakeBumpyPlane(24);
+  vtkNew<vtkIntArray> cellIds;
+  cellIds->SetName("CellId");
+  for (vtkIdType cell = 0; cell < surface->GetNumberOfCells(); ++cell)
+  {
+    cellIds->InsertNextValue(static_cast<int>(cell % 7));
+  }
+  surface->GetCellData()->SetScalars(cellIds);
+  vtkNew<vtkPolyDataMapper> vtkMapper;
+  vtkNew<LaplacianEditing::Widgets::PreviewPartMapper> partMapper;
+  for (vtkPolyDataMapper* mapper : { vtkMapper.Get(), static_cast<vtkPolyDataMapper*>(partMapper) })
+  {
+    mapper->SetInputData(surface);
+    mapper->SetScalarModeToUseCellData();
+    mapper->SetScalarRange(0.0, 6.0);
+  }
+  vtkActor* actor = scene.SurfaceActor();
+  vtkProperty* property = actor->GetProperty();
+  property->SetEdgeColor(0.1, 0.1, 0.1);
+  auto compare = [&](const std::string& what) {
+    actor->SetMapper(vtkMapper);
+    const std::vector<unsigned char> expected = Frame(scene.Window);
+    actor->SetMapper(partMapper);
+    const std::vector<unsigned char> drawn = Frame(scene.Window);
+    const double differing = DifferingPixels(expected, drawn, 0);
+    std::cout << what << ": index builds " << partMapper->GetNumberOfIndexBuilds()
+              << ", pixels that differ " << differing << "\n";
+    Check(differing == 0.0, what + ": the preview's mapper draws what VTK's draws");
+  };
+  compare("triangles");
+  property->EdgeVisibilityOn();
+  compare("triangles with edges");
+  property->EdgeVisibilityOff();
+  property->SetRepresentationToWireframe();
+  compare("wireframe");
+  property->SetRepresentationToSurface();
+  compare("triangles again");
+  surface->GetPolys()->ConvertTo64BitStorage();
+  surface->GetPolys()->Modified(); // a cell array's edits leave that to their maker, as VTK's key
+  surface->Modified();
+  compare("64-bit ids");
+  const vtkIdType quad[4] = { 0, 1, 26, 25 }; // a row of the 25 x 25 grid and the next
+  surface->GetPolys()->InsertNextCell(4, quad);
+  cellIds->InsertNextValue(3);
+  surface->GetPolys()->Modified();
+  cellIds->Modified();
+  surface->Modified();
+  compare("a quad among the triangles");
+  Check(partMapper->GetNumberOfIndexBuilds() == 6, "each change of the cells or the look rebuilds once");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 int VolumeDrag()
 {
   // The widget pairs with a volume filter's surface filter: a drag of the handle moves the
@@ -1106,6 +1168,7 @@ int main(int argc, char* argv[])
     { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups },
     { "ARAPDragCapsIterations", ARAPDragCapsIterations },
     { "PreviewDrawsWhatTheUpdateDraws", PreviewDrawsWhatTheUpdateDraws },
+    { "PartMapperDrawsWhatVTKDraws", PartMapperDrawsWhatVTKDraws },
     { "VolumeDrag", VolumeDrag } };
   const auto found = cases.find(argc > 1 ? argv[1] : "");
   if (found != cases.end())
