@@ -9,9 +9,10 @@ namespace LaplacianEditing
 {
 namespace Pipeline
 {
-/// Runs on vtkSMPTools. ParaView's VTK runs that on one thread unless told otherwise
-/// (VTK_SMP_BACKEND_IN_USE): there the loops take VTK's thread pool, which halves an ARAP drag's
-/// frame on two cores.
+/// Runs on vtkSMPTools where its backend keeps threads (TBB, OpenMP, STDThread from VTK 9.3).
+/// ParaView's VTK runs vtkSMPTools on one thread unless told otherwise
+/// (VTK_SMP_BACKEND_IN_USE), and its STDThread backend starts threads at every call: there the
+/// loops take ThreadPool's threads, which halves an ARAP drag's frame on two cores.
 VTKLAPLACIANEDITINGFILTERS_EXPORT void SMPFor(
   int begin, int end, const std::function<void(int first, int last)>& body);
 }

@@ -13,8 +13,10 @@
 #include "PreviewParts.h"
 #include "RegionSelector.h"
 #include "RestShape.h"
+#include "SMPFor.h"
 #include "SolverSettings.h"
 #include "SurfaceAdapter.h"
+#include "ThreadPool.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -29,13 +31,22 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkSMPTools.h"
 #include "vtkTransform.h"
+#include "vtkVersionMacros.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <mutex>
+#include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace le = LaplacianEditing;
@@ -662,4 +673,130 @@ TEST(EditPipeline, RunsASourcesEditAndReportsThroughItsFilter)
   EXPECT_FALSE(pipeline.Run(grid, output, source, lep::SolverSettings(), true, lep::OutputOptions{ true }));
   EXPECT_NE(errors.Messages.find("no region today"), std::string::npos);
   EXPECT_EQ(code, vtkErrorCode::UserError);
+}
+
+namespace
+{
+// How many times each index of [0, n) a loop's ranges reached, and whether one was out of it.
+struct Coverage
+{
+  explicit Coverage(int n)
+    : Hits(n)
+  {
+  }
+  std::function<void(int, int)> Body(int n)
+  {
+    return [this, n](int first, int last) {
+      this->Stray = this->Stray || first < 0 || last > n || first >= last;
+      for (int i = std::max(first, 0); i < std::min(last, n); ++i)
+      {
+        ++this->Hits[i];
+      }
+    };
+  }
+  bool Once() const
+  {
+    return !this->Stray &&
+      std::all_of(this->Hits.begin(), this->Hits.end(), [](const std::atomic<int>& h) { return h == 1; });
+  }
+  std::vector<std::atomic<int>> Hits;
+  std::atomic<bool> Stray{ false };
+};
+}
+
+TEST(ThreadPool, CoversEachIndexOnceOnItsOwnThreadsAgainAndAgain)
+{
+  lep::ThreadPool pool(2);
+  ASSERT_EQ(pool.GetNumberOfThreads(), 2);
+  for (const int n : { 0, 1, 2, 7, 1000, 100000 })
+  {
+    Coverage coverage(n);
+    pool.For(0, n, coverage.Body(n));
+    EXPECT_TRUE(coverage.Once()) << n << " indices";
+  }
+  // Chunks that take a while, so that both threads take some: over many loops, the same two
+  // threads (the caller and one worker) run them all.
+  std::mutex lock;
+  std::set<std::thread::id> threads;
+  for (int loop = 0; loop < 20; ++loop)
+  {
+    pool.For(0, 8, [&](int, int) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      std::lock_guard<std::mutex> guard(lock);
+      threads.insert(std::this_thread::get_id());
+    });
+  }
+  EXPECT_EQ(threads.size(), 2u) << "the loops ran on the pool's threads, started once";
+  EXPECT_EQ(threads.count(std::this_thread::get_id()), 1u) << "the caller works too";
+}
+
+TEST(ThreadPool, RunsNestedAndConcurrentLoopsOnTheirCallers)
+{
+  lep::ThreadPool pool(3);
+  // A loop inside a loop's body: the pool is busy, the inner loop runs on its caller.
+  std::atomic<int> innerRuns{ 0 };
+  std::atomic<bool> innerOnce{ true };
+  pool.For(0, 12, [&](int first, int last) {
+    for (int i = first; i < last; ++i)
+    {
+      Coverage inner(50);
+      pool.For(0, 50, inner.Body(50));
+      innerOnce = innerOnce && inner.Once();
+      ++innerRuns;
+    }
+  });
+  EXPECT_EQ(innerRuns, 12);
+  EXPECT_TRUE(innerOnce);
+  // Two threads calling at once: each loop covers its range once, whichever runs it.
+  Coverage a(20000), b(20000);
+  std::thread other([&] {
+    for (int k = 0; k < 50; ++k)
+    {
+      pool.For(0, 400, [&](int first, int last) { a.Body(20000)(400 * k + first, 400 * k + last); });
+    }
+  });
+  for (int k = 0; k < 50; ++k)
+  {
+    pool.For(0, 400, [&](int first, int last) { b.Body(20000)(400 * k + first, 400 * k + last); });
+  }
+  other.join();
+  EXPECT_TRUE(a.Once());
+  EXPECT_TRUE(b.Once());
+}
+
+TEST(SMPFor, RunsOnThreadsThatOutliveALoopWhereVTKWouldStartThem)
+{
+  // Where VTK's backend starts threads at every loop (STDThread before VTK 9.3; Sequential,
+  // which ParaView's VTK runs by default), the loops take ThreadPool's. A thread that outlives
+  // a loop counts the loops it has worked on; a thread started for one loop counts one.
+  const std::string backend = vtkSMPTools::GetBackend();
+  std::cout << "vtkSMPTools backend " << backend << "\n";
+  if ((backend != "STDThread" && backend != "Sequential") || VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0) ||
+    lep::ThreadPool::Shared().GetNumberOfThreads() < 2)
+  {
+    GTEST_SKIP() << "VTK's own threads run the loops here";
+  }
+  static thread_local int loopsWorked = 0;
+  static thread_local int lastLoop = -1;
+  std::atomic<int> mostByAWorker{ 0 };
+  const std::thread::id caller = std::this_thread::get_id();
+  for (int loop = 0; loop < 10; ++loop)
+  {
+    lep::SMPFor(0, 8, [&](int, int) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      if (lastLoop != loop)
+      {
+        lastLoop = loop;
+        ++loopsWorked;
+      }
+      if (std::this_thread::get_id() != caller)
+      {
+        int most = mostByAWorker;
+        while (loopsWorked > most && !mostByAWorker.compare_exchange_weak(most, loopsWorked))
+        {
+        }
+      }
+    });
+  }
+  EXPECT_GT(mostByAWorker, 1) << "a worker worked on more than one loop: started once";
 }

@@ -1,0 +1,106 @@
+#include "ThreadPool.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+ThreadPool::ThreadPool(int threads)
+{
+  for (int t = 1; t < threads; ++t)
+  {
+    this->Workers.emplace_back([this] { this->Serve(); });
+  }
+}
+
+ThreadPool::~ThreadPool()
+{
+  {
+    std::lock_guard<std::mutex> lock(this->Lock);
+    this->Stopping = true;
+  }
+  this->Wake.notify_all();
+  for (std::thread& worker : this->Workers)
+  {
+    worker.join();
+  }
+}
+
+ThreadPool& ThreadPool::Shared()
+{
+  static ThreadPool pool([] {
+    int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (const char* most = std::getenv("VTK_SMP_MAX_THREADS"))
+    {
+      threads = std::atoi(most) > 0 ? std::min(threads, std::atoi(most)) : threads;
+    }
+    return threads;
+  }());
+  return pool;
+}
+
+void ThreadPool::For(int begin, int end, const std::function<void(int, int)>& body)
+{
+  if (begin >= end)
+  {
+    return;
+  }
+  std::unique_lock<std::mutex> inUse(this->InUse, std::try_to_lock);
+  if (!inUse.owns_lock() || this->Workers.empty() || end - begin == 1)
+  {
+    body(begin, end);
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(this->Lock);
+    const int pieces = 4 * this->GetNumberOfThreads();
+    this->Body = &body;
+    this->Next = begin;
+    this->End = end;
+    this->Chunk = std::max(1, (end - begin + pieces - 1) / pieces);
+    this->Busy = static_cast<int>(this->Workers.size());
+    ++this->Loop;
+  }
+  this->Wake.notify_all();
+  this->Work();
+  std::unique_lock<std::mutex> lock(this->Lock);
+  this->Finished.wait(lock, [this] { return this->Busy == 0; });
+  this->Body = nullptr;
+}
+
+void ThreadPool::Work()
+{
+  for (long long first = this->Next.fetch_add(this->Chunk); first < this->End;
+       first = this->Next.fetch_add(this->Chunk))
+  {
+    const int from = static_cast<int>(first);
+    (*this->Body)(from, from + std::min(this->Chunk, this->End - from));
+  }
+}
+
+void ThreadPool::Serve()
+{
+  unsigned long served = 0;
+  for (;;)
+  {
+    {
+      std::unique_lock<std::mutex> lock(this->Lock);
+      this->Wake.wait(lock, [&] { return this->Stopping || this->Loop != served; });
+      if (this->Stopping)
+      {
+        return;
+      }
+      served = this->Loop;
+    }
+    this->Work();
+    std::lock_guard<std::mutex> lock(this->Lock);
+    if (--this->Busy == 0)
+    {
+      this->Finished.notify_one();
+    }
+  }
+}
+}
+}
