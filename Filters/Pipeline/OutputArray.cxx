@@ -1,5 +1,7 @@
 #include "OutputArray.h"
 
+#include "CachedRangePoints.h"
+
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
@@ -21,7 +23,7 @@ namespace
 {
 // The ranges vtkDataArray caches in its information (per component and of the tuples' norms,
 // plain and finite), carried across a write of a few tuples. Modified() drops the cache, and
-// whoever asks next (ParaView's data information, vtkPoints::GetBounds) would pass over the
+// whoever asks next (ParaView's data information, the points' bounds) would pass over the
 // whole array. Where a cached extreme lies outside the tuples written, the new extreme is that
 // one or a written value: known from the written tuples alone. Where it lies among them (a
 // handle on the surface's extreme), it is the extreme of the tuples left alone or a written
@@ -332,7 +334,7 @@ OutputArray::Buffer& OutputArray::Acquire(vtkDataArray* rest, bool points)
   {
     best->Array = vtk::TakeSmartPointer(rest->NewInstance());
     best->Source = nullptr;
-    best->Points = points ? vtkSmartPointer<vtkPoints>::New() : nullptr;
+    best->Points = points ? vtkSmartPointer<CachedRangePoints>::New() : nullptr;
   }
   best->LastUse = ++this->Uses;
   return *best;

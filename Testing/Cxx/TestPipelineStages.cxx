@@ -502,6 +502,22 @@ TEST(OutputArray, KeepsThePointsRangesThroughTheirModified)
     double z[2];
     points->GetData()->GetRange(z, 2); // as ParaView's data information would, caching them
     EXPECT_EQ(z[1], std::sin(1.5) + lift) << "update " << update;
+    // The bounds are the cached ranges, which are the points' own.
+    double bounds[6], exact[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN,
+      VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    points->GetBounds(bounds);
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        exact[2 * c] = std::min(exact[2 * c], points->GetPoint(i)[c]);
+        exact[2 * c + 1] = std::max(exact[2 * c + 1], points->GetPoint(i)[c]);
+      }
+    }
+    for (int k = 0; k < 6; ++k)
+    {
+      EXPECT_EQ(bounds[k], exact[k]) << "update " << update << ", bound " << k;
+    }
   }
 }
 

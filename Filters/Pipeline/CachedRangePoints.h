@@ -1,0 +1,38 @@
+// CachedRangePoints: points whose bounds are their array's ranges, those vtkDataArray caches.
+//
+// vtkPoints::ComputeBounds passes over the whole array whenever the points changed, even where
+// the array still caches its ranges (VTK 9.1, 9.2: vtkDataArray::ComputeScalarRange). OutputArray
+// keeps those ranges through the writes of a region, so on the points of an edit's output the
+// bounds ParaView's data information asks for after each update cost nothing (on a 2M-point
+// sphere, 84 ms of the release of each drag before). Where no range is cached, the first
+// GetBounds computes and caches them all, for whoever asks for the ranges next.
+#ifndef LaplacianEditing_Pipeline_CachedRangePoints_h
+#define LaplacianEditing_Pipeline_CachedRangePoints_h
+
+#include "vtkLaplacianEditingFiltersModule.h" // for export macro
+#include "vtkPoints.h"
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+class VTKLAPLACIANEDITINGFILTERS_EXPORT CachedRangePoints : public vtkPoints
+{
+public:
+  static CachedRangePoints* New();
+  vtkTypeMacro(CachedRangePoints, vtkPoints);
+
+  void ComputeBounds() override;
+
+protected:
+  CachedRangePoints() = default;
+  ~CachedRangePoints() override = default;
+
+private:
+  CachedRangePoints(const CachedRangePoints&) = delete;
+  void operator=(const CachedRangePoints&) = delete;
+};
+}
+}
+
+#endif
