@@ -2,6 +2,7 @@
 
 #include "EditPipeline.h"
 #include "PreviewParts.h"
+#include "Stopwatch.h"
 #include "vtkLaplacianDeformationFilter.h"
 
 #include "vtkObjectFactory.h"
@@ -14,6 +15,7 @@ vtkStandardNewMacro(vtkLaplacianDragPreview);
 struct vtkLaplacianDragPreview::vtkInternals
 {
   lep::PreviewParts Parts;
+  double UpdateTime = 0.0;
 };
 
 vtkLaplacianDragPreview::vtkLaplacianDragPreview()
@@ -38,6 +40,7 @@ void vtkLaplacianDragPreview::SetFilter(vtkLaplacianDeformationFilter* filter)
 
 bool vtkLaplacianDragPreview::Update(const double translation[3], const double rotation[3])
 {
+  const LaplacianEditing::Stopwatch stopwatch;
   vtkLaplacianDeformationFilter* filter = this->Filter;
   if (!filter || !filter->SolveDragStep(translation, rotation))
   {
@@ -50,7 +53,13 @@ bool vtkLaplacianDragPreview::Update(const double translation[3], const double r
     parts.Build(filter->GetRestSurface(), filter->GetOutput(), solved);
   }
   parts.Write(solved);
+  this->Internals->UpdateTime = stopwatch.Seconds();
   return true;
+}
+
+double vtkLaplacianDragPreview::GetUpdateTime()
+{
+  return this->Internals->UpdateTime;
 }
 
 bool vtkLaplacianDragPreview::Update(double tx, double ty, double tz, double rx, double ry, double rz)
@@ -79,4 +88,5 @@ void vtkLaplacianDragPreview::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Filter: " << this->Filter << "\n";
   os << indent << "MovingPart: " << this->GetMovingPart()->GetNumberOfPoints() << " points\n";
+  os << indent << "UpdateTime: " << this->Internals->UpdateTime << " s\n";
 }

@@ -59,6 +59,12 @@ public:
   vtkPolyData* GetMovingPart();
   ///@}
 
+  /**
+   * Seconds the last Update that previewed took: the drag step's solve and the moving part's writing (and, at
+   * a region's first, the still part's building). 0 before any.
+   */
+  double GetUpdateTime();
+
   /** Forgets both parts. */
   void Release();
 

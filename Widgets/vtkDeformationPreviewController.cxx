@@ -97,6 +97,11 @@ int vtkDeformationPreviewController::IsPreviewShown()
   return this->Internals->Actors.IsShown() ? 1 : 0;
 }
 
+double vtkDeformationPreviewController::GetPreviewTime()
+{
+  return this->Internals->Preview->GetUpdateTime();
+}
+
 void vtkDeformationPreviewController::Update()
 {
   // A hidden representation previews nothing, so that the output's actor stays.

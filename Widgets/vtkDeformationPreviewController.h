@@ -51,6 +51,9 @@ public:
   /** Whether the preview shows now (the filter could preview, and an actor showed its output). */
   int IsPreviewShown();
 
+  /** Seconds the last preview took to solve and write (vtkLaplacianDragPreview::GetUpdateTime). */
+  double GetPreviewTime();
+
   /** Shows or hides the preview as Previewing says, for the representation's motion now. */
   void Update();
 

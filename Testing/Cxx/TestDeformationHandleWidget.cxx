@@ -978,6 +978,7 @@ int PreviewDrawsWhatTheUpdateDraws()
   Check(indexBuilds == std::vector<int>{ 1, 1 },
     "each part's index buffers are built once over the drag's four frames");
   Check(updates == 0, "previewing updates nothing (" + std::to_string(updates) + " updates)");
+  Check(preview->GetPreviewTime() > 0.0, "the last preview's solve and write are timed");
   rep->VisibilityOff();
   Check(!preview->IsPreviewShown() && scene.SurfaceActor()->GetVisibility(),
     "a hidden representation previews nothing");
