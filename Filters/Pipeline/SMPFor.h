@@ -12,7 +12,7 @@ namespace Pipeline
 /// Runs on vtkSMPTools where its backend keeps threads (TBB, OpenMP, STDThread from VTK 9.3).
 /// ParaView's VTK runs vtkSMPTools on one thread unless told otherwise
 /// (VTK_SMP_BACKEND_IN_USE), and its STDThread backend starts threads at every call: there the
-/// loops take ThreadPool's threads, which halves an ARAP drag's frame on two cores.
+/// loops take ThreadPool's threads, started once.
 VTKLAPLACIANEDITINGFILTERS_EXPORT void SMPFor(
   int begin, int end, const std::function<void(int first, int last)>& body);
 }

@@ -47,8 +47,8 @@ void ThreadPool::For(int begin, int end, const std::function<void(int, int)>& bo
   {
     return;
   }
-  std::unique_lock<std::mutex> inUse(this->InUse, std::try_to_lock);
-  if (!inUse.owns_lock() || this->Workers.empty() || end - begin == 1)
+  bool idle = false;
+  if (this->Workers.empty() || end - begin == 1 || !this->InUse.compare_exchange_strong(idle, true))
   {
     body(begin, end);
     return;
@@ -68,6 +68,7 @@ void ThreadPool::For(int begin, int end, const std::function<void(int, int)>& bo
   std::unique_lock<std::mutex> lock(this->Lock);
   this->Finished.wait(lock, [this] { return this->Busy == 0; });
   this->Body = nullptr;
+  this->InUse = false;
 }
 
 void ThreadPool::Work()

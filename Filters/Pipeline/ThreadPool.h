@@ -6,7 +6,8 @@
 // 30k-vertex ARAP edit makes about six such calls, and in the ParaView GUI its median went from
 // 22–24 ms to 17–19 ms on these threads (Documentation/performance.md). The calling thread works
 // too; a call made while the pool is busy (from inside a loop body, or from another thread) runs
-// on its caller alone, as VTK runs a nested loop.
+// on its caller alone, as VTK runs a nested loop. Bodies must not throw (on a worker, as on
+// VTK's STDThread threads, an exception ends the process).
 #ifndef LaplacianEditing_Pipeline_ThreadPool_h
 #define LaplacianEditing_Pipeline_ThreadPool_h
 
@@ -44,8 +45,8 @@ private:
   void Work();
   void Serve();
 
-  std::mutex InUse; // held by the caller of a loop the workers share
-  std::mutex Lock;  // guards what follows, to the atomic counter
+  std::atomic<bool> InUse{ false }; // a loop has the workers
+  std::mutex Lock;                   // guards what follows, to the atomic counter
   std::condition_variable Wake;
   std::condition_variable Finished;
   const std::function<void(int, int)>* Body = nullptr;
