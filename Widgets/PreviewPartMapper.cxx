@@ -1,5 +1,7 @@
 #include "PreviewPartMapper.h"
 
+#include "CachedRangePoints.h"
+
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkMath.h"
@@ -119,12 +121,10 @@ void PreviewPartMapper::ComputeBounds()
     vtkMath::UninitializeBounds(this->Bounds);
     return;
   }
-  // The ranges vtkDataArray caches, which the vertex buffer's shift and scale read next.
-  vtkDataArray* points = input->GetPoints()->GetData();
-  for (int component = 0; component < 3; ++component)
-  {
-    points->GetRange(this->Bounds + 2 * component, component);
-  }
+  // The ranges vtkDataArray caches, which the vertex buffer's shift and scale read next (the
+  // still part's points are the input's, not always CachedRangePoints).
+  LaplacianEditing::Pipeline::CachedRangePoints::RangeBounds(
+    input->GetPoints()->GetData(), this->Bounds);
 }
 }
 }

@@ -15,16 +15,21 @@ void CachedRangePoints::ComputeBounds()
   {
     return;
   }
-  if (this->Data->GetNumberOfTuples() == 0 || this->Data->GetNumberOfComponents() != 3)
+  if (this->Data->GetNumberOfTuples() == 0)
   {
     this->Superclass::ComputeBounds();
     return;
   }
+  RangeBounds(this->Data, this->Bounds);
+  this->ComputeTime.Modified();
+}
+
+void CachedRangePoints::RangeBounds(vtkDataArray* data, double bounds[6])
+{
   for (int component = 0; component < 3; ++component)
   {
-    this->Data->GetRange(this->Bounds + 2 * component, component);
+    data->GetRange(bounds + 2 * component, component);
   }
-  this->ComputeTime.Modified();
 }
 }
 }

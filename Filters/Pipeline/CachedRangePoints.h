@@ -24,6 +24,10 @@ public:
 
   void ComputeBounds() override;
 
+  /// The component ranges of a 3-component array as bounds, those it caches if it does
+  /// (computed and cached otherwise).
+  static void RangeBounds(vtkDataArray* data, double bounds[6]);
+
 protected:
   CachedRangePoints() = default;
   ~CachedRangePoints() override = default;

@@ -765,15 +765,16 @@ TEST(ThreadPool, RunsNestedAndConcurrentLoopsOnTheirCallers)
   EXPECT_TRUE(innerOnce);
   // Two threads calling at once: each loop covers its range once, whichever runs it.
   Coverage a(20000), b(20000);
+  const std::function<void(int, int)> coverA = a.Body(20000), coverB = b.Body(20000);
   std::thread other([&] {
     for (int k = 0; k < 50; ++k)
     {
-      pool.For(0, 400, [&](int first, int last) { a.Body(20000)(400 * k + first, 400 * k + last); });
+      pool.For(0, 400, [&](int first, int last) { coverA(400 * k + first, 400 * k + last); });
     }
   });
   for (int k = 0; k < 50; ++k)
   {
-    pool.For(0, 400, [&](int first, int last) { b.Body(20000)(400 * k + first, 400 * k + last); });
+    pool.For(0, 400, [&](int first, int last) { coverB(400 * k + first, 400 * k + last); });
   }
   other.join();
   EXPECT_TRUE(a.Once());
