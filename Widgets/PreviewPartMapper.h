@@ -1,5 +1,6 @@
 // PreviewPartMapper: the OpenGL mapper of a drag preview's part, whose points move every frame
-// and whose cells do not.
+// and whose cells do not. ParaView's Editable Surface draws an edited surface with it too
+// (vtkLaplacianSurfaceMapper), for the same reason.
 //
 // VTK 9.1 and 9.2 rebuild a mapper's index buffers whenever its input's points move:
 // vtkOpenGLPolyDataMapper::BuildIBO compares a state that BuildBufferObjects has already
