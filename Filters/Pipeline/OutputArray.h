@@ -68,6 +68,7 @@ private:
     const vtkDataArray* Source = nullptr;
     vtkMTimeType SourceTime = 0;
     std::vector<vtkIdType> Written;
+    std::vector<vtkIdType> WrittenSorted; // Written, sorted, once each: a drag's moves reuse it
     std::uint64_t Key = 0;
     // The extremes of the tuples outside a set that changes (CachedRanges in the source), and
     // that set: measured once for a region, they keep the cached ranges when its writes reach an
