@@ -6,6 +6,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkRenderer.h"
+#include "vtkSelection.h"
 
 vtkStandardNewMacro(vtkLaplacianSurfaceMapper);
 
@@ -15,7 +16,10 @@ vtkLaplacianSurfaceMapper::~vtkLaplacianSurfaceMapper() = default;
 
 vtkPolyData* vtkLaplacianSurfaceMapper::SurfaceDrawnAlone(vtkRenderer* renderer)
 {
-  if (renderer->GetSelector())
+  // A hardware selection's passes, and the highlight of an interactive selection (the
+  // representation's SetSelection), are the composite mapper's.
+  vtkSelection* highlighted = this->GetSelection();
+  if (renderer->GetSelector() || (highlighted && highlighted->GetNumberOfNodes() > 0))
   {
     return nullptr;
   }

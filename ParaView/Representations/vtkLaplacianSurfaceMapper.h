@@ -7,10 +7,10 @@
  * a cell at a time (VTK 9.2's vtkCompositeMapperHelper2 builds vertex and index buffers
  * together): 0.32 s of the 1.07 s release of a drag on a 2M-point sphere, for buffers an edit
  * does not change. Where the input is one surface, drawn as a whole (no block's visibility,
- * colour, opacity or material set) and not for a hardware selection, this mapper draws it with
- * PreviewPartMapper instead, which keys its index buffers on the cells and uploads a surface of
- * triangles whole, with this mapper's colouring. Otherwise, and for every selection pass, it
- * draws as vtkCompositePolyDataMapper2.
+ * colour, opacity or material set), not for a hardware selection and with no interactive
+ * selection highlighted, this mapper draws it with PreviewPartMapper instead, which keys its
+ * index buffers on the cells and uploads a surface of triangles whole, with this mapper's
+ * colouring. Otherwise it draws as vtkCompositePolyDataMapper2.
  */
 #ifndef vtkLaplacianSurfaceMapper_h
 #define vtkLaplacianSurfaceMapper_h

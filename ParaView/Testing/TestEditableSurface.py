@@ -8,7 +8,8 @@ import os
 import sys
 
 import paraview.simple as simple
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonCore import vtkIdTypeArray
+from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkSelection, vtkSelectionNode
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 from paraview.vtk.util.numpy_support import vtk_to_numpy
 
@@ -62,12 +63,13 @@ def cells_bounds(surface):
     return bounds
 
 
-def same_as_surface(display, view, state):
+def same_as_surface(display, view, state, alone=True):
     """The Editable Surface's pixels are the Surface's: the same but for rounding, one level of
     one channel in at most 0.1% of the pixels (the composite mapper passes the colours to its
     shaders as its own uniforms)."""
     editable = pixels(view)
-    check(counters(display)[1] == 1, f"{state}: the surface was not drawn alone")
+    check(counters(display)[1] == int(alone),
+          f"{state}: the surface was {'not ' if alone else ''}drawn alone")
     display.Representation = "Surface"
     plain = pixels(view)
     display.Representation = "Editable Surface"
@@ -135,6 +137,28 @@ display.Representation = "Editable Surface"
 pixels(view)
 check(counters(display)[1] == 1, "after a selection, the surface was not drawn alone")
 print(f"selection: {selected}")
+
+# A selection set on the mapper, to highlight (the representation's SetSelection, which
+# ParaView's interactive selection tools set), is left to the composite mapper, as in Surface.
+highlight = vtkSelection()
+node = vtkSelectionNode()
+node.SetFieldType(vtkSelectionNode.CELL)
+node.SetContentType(vtkSelectionNode.INDICES)
+node.GetProperties().Set(vtkSelectionNode.COMPOSITE_INDEX(), 1)
+cells = vtkIdTypeArray()
+for cell in range(0, 20000, 2):
+    cells.InsertNextValue(cell)
+node.SetSelectionList(cells)
+highlight.AddNode(node)
+for representation in ("Surface", "Editable Surface"):
+    display.Representation = representation
+    display.GetClientSideObject().GetActiveRepresentation().SetSelection(highlight)
+same_as_surface(display, view, "with a selection set on the mapper", alone=False)
+for representation in ("Surface", "Editable Surface"):
+    display.Representation = representation
+    display.GetClientSideObject().GetActiveRepresentation().SetSelection(vtkSelection())
+pixels(view)
+check(counters(display)[1] == 1, "with the highlight cleared, the surface was not drawn alone")
 
 # A surface with a point no cell uses: the bounds stay the cells', as VTK computes them.
 lonely = simple.ProgrammableSource(OutputDataSetType="vtkPolyData", Script="""
