@@ -374,17 +374,19 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   // copy holds the rest's values, and its ranges are those the rest has cached. The moves of a
   // drag write the same tuples, sorted once (a sort of the bunny's 30k region was 1.7 ms a move).
   const bool sameTuples = derived && buffer.Written == ids;
-  std::vector<vtkIdType> changing = sameTuples ? buffer.WrittenSorted : ids;
+  std::vector<vtkIdType> merged;
   if (!sameTuples)
   {
+    merged = ids;
     if (derived)
     {
-      changing.insert(changing.end(), buffer.Written.begin(), buffer.Written.end());
+      merged.insert(merged.end(), buffer.Written.begin(), buffer.Written.end());
     }
-    SortOnce(changing);
+    SortOnce(merged);
     buffer.WrittenSorted = ids;
     SortOnce(buffer.WrittenSorted);
   }
+  const std::vector<vtkIdType>& changing = sameTuples ? buffer.WrittenSorted : merged;
   CachedRanges ranges;
   ranges.Capture(derived ? buffer.Array.Get() : rest, changing);
   if (derived && !sameTuples)
