@@ -350,6 +350,9 @@ struct CholmodFactor::Internals
   // supernode's rows are its own).
   std::vector<int> DirectRowsEnd;
   double ParallelShare = 0.0;
+  // Each row's place in the factor's order (the inverse of Perm): the solution's rows are
+  // gathered from it, since a scatter through Perm from several threads shares cache lines.
+  std::vector<int> PlaceOfRow;
 
   Internals() { cholmod_start(&this->Common); }
   ~Internals()
@@ -729,6 +732,12 @@ std::string CholmodFactor::Analyze(
     return "the symbolic analysis failed (CHOLMOD status " + std::to_string(common.status) + ")";
   }
   this->Internal->Schedule(parts);
+  const int* permutation = static_cast<const int*>(this->Internal->Factor->Perm);
+  this->Internal->PlaceOfRow.resize(this->Internal->Factor->n);
+  for (int k = 0; k < static_cast<int>(this->Internal->Factor->n); ++k)
+  {
+    this->Internal->PlaceOfRow[permutation[k]] = k;
+  }
   return {};
 }
 
@@ -787,14 +796,17 @@ Eigen::MatrixXd CholmodFactor::Solve(const Eigen::MatrixXd& rhs, const ParallelF
   // Permuted, with each row's columns side by side; three columns as four (one vector a row).
   const int* permutation = static_cast<const int*>(factor->Perm);
   const int stride = columns == 3 ? 4 : columns;
-  std::vector<double> y(static_cast<size_t>(n) * stride, 0.0);
-  for (int k = 0; k < n; ++k)
-  {
-    for (int c = 0; c < columns; ++c)
+  // The permutations run through `loop` too: serial, they were a seventh of a 30k-vertex solve.
+  std::vector<double> y(static_cast<size_t>(n) * stride);
+  loop(0, n, [&](int first, int last) {
+    for (int k = first; k < last; ++k)
     {
-      y[static_cast<size_t>(k) * stride + c] = rhs(permutation[k], c);
+      for (int c = 0; c < stride; ++c)
+      {
+        y[static_cast<size_t>(k) * stride + c] = c < columns ? rhs(permutation[k], c) : 0.0;
+      }
     }
-  }
+  });
   switch (stride)
   {
     case 1: this->Internal->SolveInPlace<1>(y.data(), loop); break;
@@ -802,13 +814,16 @@ Eigen::MatrixXd CholmodFactor::Solve(const Eigen::MatrixXd& rhs, const ParallelF
     case 4: this->Internal->SolveInPlace<4>(y.data(), loop); break;
     default: break;
   }
-  for (int k = 0; k < n; ++k)
-  {
-    for (int c = 0; c < columns; ++c)
+  const int* place = this->Internal->PlaceOfRow.data();
+  loop(0, n, [&](int first, int last) {
+    for (int row = first; row < last; ++row)
     {
-      solution(permutation[k], c) = y[static_cast<size_t>(k) * stride + c];
+      for (int c = 0; c < columns; ++c)
+      {
+        solution(row, c) = y[static_cast<size_t>(place[row]) * stride + c];
+      }
     }
-  }
+  });
   return solution;
 }
 
