@@ -93,6 +93,8 @@ struct ArapIterate
   /// The points at the start of the last solve, its handle maps and point targets, for
   /// ArapOptions::Extrapolate.
   Positions Before;
+  /// The rotations of Before (empty where they did not fit it).
+  Quaternions BeforeRotations;
   std::vector<AffineMap> BeforeMaps;
   Positions BeforeTargets;
 
@@ -195,12 +197,15 @@ private:
   // rows, into the workspace's candidate; returns its energy).
   bool Extrapolate(const std::vector<AffineMap>& handleMaps, const PointTargets* points,
     ArapIterate& iterate, const ArapOptions& options) const;
+  // An extrapolated start's rotations, moved on as its points are: q + (q - q_before), where
+  // the last two solves' rotations are known; returns whether they were.
+  bool ExtrapolateRotations(ArapIterate& iterate, const ParallelFor& loop) const;
   Eigen::MatrixXd FreePositions(const Positions& roi) const;
   double Evaluate(const Eigen::MatrixXd& free, ArapIterate& iterate, const ParallelFor& loop) const;
   // The rings in the form ArapBending takes them.
   ArapRings Rings() const { return { this->Offsets, this->Neighbors, this->Weights, this->RestEdgeSums }; }
   // Positions of the patch (the ROI, its ring and the ring's ring) for given ROI positions.
-  void Patch(const Positions& roiPositions, std::vector<Vector3>& patch) const;
+  void Patch(const Positions& roiPositions, std::vector<Vector3>& patch, const ParallelFor& loop) const;
   // The local step: rotations of the energy vertices, refined from `quaternions` (seeded by
   // exact polar decompositions where empty), or of `only` those, the others' rotations and
   // residuals kept (all are redone when rotations are coupled). Returns the energy.
@@ -226,6 +231,9 @@ private:
   // energy.
   double LocalStep(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
     const ParallelFor& loop, bool aroundHandles) const;
+  // Sets the handle rows to their targets and the patch to the iterate's points.
+  void PlaceHandles(const std::vector<AffineMap>& handleMaps, ArapIterate& iterate,
+    const ParallelFor& loop) const;
   // A global step with `rotations` from the iterate's patch, written to its free rows.
   void GlobalStep(const std::vector<Eigen::Matrix3d>& rotations, ArapIterate& iterate,
     const ParallelFor& loop, const PointTargets* points) const;
