@@ -1,6 +1,9 @@
 #include "CachedRangePoints.h"
 
 #include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 
 namespace LaplacianEditing
@@ -30,6 +33,19 @@ void CachedRangePoints::RangeBounds(vtkDataArray* data, double bounds[6])
   {
     data->GetRange(bounds + 2 * component, component);
   }
+}
+
+void CachedRangePoints::StoreRanges(vtkDataArray* data, const double* ranges, bool finite)
+{
+  const int components = data->GetNumberOfComponents();
+  vtkNew<vtkInformationVector> perComponent;
+  perComponent->SetNumberOfInformationObjects(components);
+  for (int c = 0; c < components; ++c)
+  {
+    perComponent->GetInformationObject(c)->Set(vtkDataArray::COMPONENT_RANGE(), ranges + 2 * c, 2);
+  }
+  data->GetInformation()->Set(
+    finite ? vtkAbstractArray::PER_FINITE_COMPONENT() : vtkAbstractArray::PER_COMPONENT(), perComponent);
 }
 }
 }

@@ -27,6 +27,10 @@ public:
   /// The component ranges of a 3-component array as bounds, those it caches if it does
   /// (computed and cached otherwise).
   static void RangeBounds(vtkDataArray* data, double bounds[6]);
+  /// Caches (min, max) pairs, one per component, as the array's component ranges (or its
+  /// finite ones), where vtkDataArray keeps what it computes; call after the array's last
+  /// Modified(), since a later one drops them.
+  static void StoreRanges(vtkDataArray* data, const double* ranges, bool finite = false);
 
 protected:
   CachedRangePoints() = default;

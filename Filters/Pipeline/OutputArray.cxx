@@ -114,7 +114,7 @@ public:
         range[i] = std::min(low, written[f][i]);
         range[i + 1] = std::max(high, written[f][i + 1]);
       }
-      Set(array->GetInformation(), f, this->Components, range);
+      Set(array, f, range);
     }
   }
 
@@ -167,24 +167,16 @@ private:
     return true;
   }
 
-  static void Set(vtkInformation* info, int family, int components, const std::vector<double>& range)
+  static void Set(vtkDataArray* array, int family, const std::vector<double>& range)
   {
     if (Norm(family))
     {
-      info->Set(Finite(family) ? vtkDataArray::L2_NORM_FINITE_RANGE() : vtkDataArray::L2_NORM_RANGE(),
+      array->GetInformation()->Set(
+        Finite(family) ? vtkDataArray::L2_NORM_FINITE_RANGE() : vtkDataArray::L2_NORM_RANGE(),
         range.data(), 2);
       return;
     }
-    vtkNew<vtkInformationVector> perComponent;
-    perComponent->SetNumberOfInformationObjects(components);
-    for (int c = 0; c < components; ++c)
-    {
-      perComponent->GetInformationObject(c)->Set(
-        vtkDataArray::COMPONENT_RANGE(), range.data() + 2 * c, 2);
-    }
-    info->Set(
-      Finite(family) ? vtkAbstractArray::PER_FINITE_COMPONENT() : vtkAbstractArray::PER_COMPONENT(),
-      perComponent);
+    CachedRangePoints::StoreRanges(array, range.data(), Finite(family));
   }
 
   // The extremes in each family, (min, max) pairs, of the tuples `forEach` visits; none give

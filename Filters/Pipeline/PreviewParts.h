@@ -14,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h" // for vtkNew<vtkPolyData>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -52,6 +53,8 @@ private:
   // Per point of the moving part: its solution row (-1: at rest); its first points are the
   // normal refresher's, in order, so that it writes their normals as tuples 0, 1, ...
   std::vector<int> RowOfPoint;
+  // The (min, max) per coordinate of the moving part's points at rest, for its ranges.
+  std::array<double, 6> StillPointsExtremes = {};
   std::uint64_t RegionVersion = 0;
   bool Built = false;
 };

@@ -591,6 +591,24 @@ TEST(PreviewParts, CutTheSurfaceIntoStillAndMovingParts)
   }
   EXPECT_EQ(top, 0.5) << "the moving part holds the solution";
   EXPECT_EQ(still->GetPoints(), grid.Input->GetPoints()) << "the still part is at rest";
+  // Write caches the moving points' ranges; they are those computed afresh.
+  vtkDataArray* positions = moving->GetPoints()->GetData();
+  ASSERT_TRUE(positions->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()));
+  vtkNew<vtkDoubleArray> copy;
+  copy->SetNumberOfComponents(3);
+  for (vtkIdType p = 0; p < positions->GetNumberOfTuples(); ++p)
+  {
+    copy->InsertNextTuple(positions->GetTuple(p));
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    double cached[2], fresh[2];
+    positions->GetRange(cached, c);
+    copy->GetRange(fresh, c);
+    EXPECT_EQ(cached[0], fresh[0]) << "component " << c;
+    EXPECT_EQ(cached[1], fresh[1]) << "component " << c;
+  }
+  EXPECT_EQ(positions->GetRange(2)[1], 0.5);
 }
 
 TEST(LandmarkBinder, BindsToTrianglesAndTurnsTargetsIntoTheCoresFrame)
