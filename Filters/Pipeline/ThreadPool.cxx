@@ -1,12 +1,29 @@
 #include "ThreadPool.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
 namespace LaplacianEditing
 {
 namespace Pipeline
 {
+namespace
+{
+template <class Condition>
+bool SpinUntil(Condition condition)
+{
+  const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
+  while (!condition())
+  {
+    if (std::chrono::steady_clock::now() > until)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
 ThreadPool::ThreadPool(int threads)
 {
   for (int t = 1; t < threads; ++t)
@@ -65,8 +82,11 @@ void ThreadPool::For(int begin, int end, const std::function<void(int, int)>& bo
   }
   this->Wake.notify_all();
   this->Work();
-  std::unique_lock<std::mutex> lock(this->Lock);
-  this->Finished.wait(lock, [this] { return this->Busy == 0; });
+  if (!SpinUntil([this] { return this->Busy.load() == 0; }))
+  {
+    std::unique_lock<std::mutex> lock(this->Lock);
+    this->Finished.wait(lock, [this] { return this->Busy == 0; });
+  }
   this->Body = nullptr;
   this->InUse = false;
 }
@@ -86,9 +106,13 @@ void ThreadPool::Serve()
   unsigned long served = 0;
   for (;;)
   {
+    if (!SpinUntil([&] { return this->Loop.load() != served; }))
     {
       std::unique_lock<std::mutex> lock(this->Lock);
       this->Wake.wait(lock, [&] { return this->Stopping || this->Loop != served; });
+    }
+    {
+      std::lock_guard<std::mutex> lock(this->Lock);
       if (this->Stopping)
       {
         return;
@@ -96,9 +120,9 @@ void ThreadPool::Serve()
       served = this->Loop;
     }
     this->Work();
-    std::lock_guard<std::mutex> lock(this->Lock);
     if (--this->Busy == 0)
     {
+      std::lock_guard<std::mutex> lock(this->Lock);
       this->Finished.notify_one();
     }
   }
