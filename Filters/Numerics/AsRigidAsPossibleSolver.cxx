@@ -934,23 +934,21 @@ bool AsRigidAsPossibleSolver::Extrapolate(const std::vector<AffineMap>& handleMa
     (points - iterate.Before).cwiseAbs().maxCoeff() > 1e-9 * this->RestExtent;
   iterate.BeforeMaps = handleMaps;
   iterate.BeforeTargets = pointTargets;
-  if (!extrapolate)
-  {
-    iterate.BeforeRotations.clear();
-    if (iterate.Work.RotationsFitPoints)
-    {
-      iterate.BeforeRotations = iterate.Rotations;
-    }
-  }
   if (extrapolate)
   {
     iterate.Work.Candidate = points;
     points += points - iterate.Before;
     iterate.Before.swap(iterate.Work.Candidate);
+    // BeforeRotations move on in ExtrapolateRotations.
   }
   else
   {
     iterate.Before = points;
+    iterate.BeforeRotations.clear();
+    if (iterate.Work.RotationsFitPoints)
+    {
+      iterate.BeforeRotations = iterate.Rotations;
+    }
   }
   return extrapolate;
 }

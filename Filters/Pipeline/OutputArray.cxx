@@ -7,7 +7,6 @@
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationInformationVectorKey.h"
 #include "vtkInformationVector.h"
-#include "vtkNew.h"
 #include "vtkPoints.h"
 
 #include <algorithm>
