@@ -4,10 +4,14 @@
 #define MeshReader_h
 
 #include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkLoopSubdivisionFilter.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPoints.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkPolyDataReader.h"
 #include "vtkSTLReader.h"
 #include "vtkSphereSource.h"
@@ -16,6 +20,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -104,7 +109,55 @@ inline vtkSmartPointer<vtkPolyData> Sphere(const std::string& spec)
   return sphere->GetOutput();
 }
 
-/// A mesh file by its extension, or a generated sphere (see Sphere).
+inline vtkSmartPointer<vtkPolyData> Read(const std::string& path, std::string& error);
+
+/// "scan:LEVELS:PATH": the mesh at PATH Loop-subdivided LEVELS times, with fine bumps along its
+/// normals, a stand-in for a dense scan: scan:3:Armadillo.ply has 2,378,221 vertices. The bumps,
+/// 0.05% of the diagonal high and 0.6% apart, are detail that an edit must carry; the input's
+/// point data is dropped.
+inline vtkSmartPointer<vtkPolyData> Scan(const std::string& spec, std::string& error)
+{
+  const std::size_t colon = spec.find(':', 5);
+  const int levels = colon == std::string::npos ? -1 : std::atoi(spec.substr(5, colon - 5).c_str());
+  if (levels < 0 || levels > 6)
+  {
+    error = "a scan is scan:LEVELS:PATH, LEVELS from 0 to 6";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = Read(spec.substr(colon + 1), error);
+  if (!mesh)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkPolyData> surface; // points and triangles only: the subdivision interpolates the rest
+  surface->SetPoints(mesh->GetPoints());
+  surface->SetPolys(mesh->GetPolys());
+  vtkNew<vtkLoopSubdivisionFilter> subdivide;
+  subdivide->SetInputData(surface);
+  subdivide->SetNumberOfSubdivisions(levels);
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(subdivide->GetOutputPort());
+  normals->SplittingOff();
+  normals->ComputeCellNormalsOff();
+  normals->Update();
+  vtkSmartPointer<vtkPolyData> scan = normals->GetOutput();
+  const double diagonal = scan->GetLength();
+  const double height = 5e-4 * diagonal, k = 2.0 * 3.141592653589793 / (6e-3 * diagonal);
+  vtkPoints* points = scan->GetPoints();
+  vtkDataArray* n = scan->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < scan->GetNumberOfPoints(); ++i)
+  {
+    double p[3], normal[3];
+    points->GetPoint(i, p);
+    n->GetTuple(i, normal);
+    const double h = height * std::sin(k * p[0]) * std::sin(k * p[1]) * std::sin(k * p[2]);
+    points->SetPoint(i, p[0] + h * normal[0], p[1] + h * normal[1], p[2] + h * normal[2]);
+  }
+  scan->GetPointData()->Initialize();
+  return scan;
+}
+
+/// A mesh file by its extension, or a generated sphere (see Sphere) or scan (see Scan).
 inline vtkSmartPointer<vtkPolyData> Read(const std::string& path, std::string& error)
 {
   if (path.rfind("sphere:", 0) == 0)
@@ -112,6 +165,10 @@ inline vtkSmartPointer<vtkPolyData> Read(const std::string& path, std::string& e
     vtkSmartPointer<vtkPolyData> sphere = Sphere(path);
     error = sphere ? "" : "a sphere is sphere:THETAxPHI, both resolutions at least 3";
     return sphere;
+  }
+  if (path.rfind("scan:", 0) == 0)
+  {
+    return Scan(path, error);
   }
   if (!std::ifstream(path))
   {
