@@ -19,14 +19,50 @@ CoincidentPoints::CoincidentPoints(double tolerance, const Vector3& origin)
 {
 }
 
-std::size_t CoincidentPoints::BinHash::operator()(const Bin& bin) const
+std::size_t CoincidentPoints::Slot(const Bin& bin) const
 {
-  std::size_t hash = 0;
+  std::uint64_t hash = 0;
   for (std::int64_t index : bin)
   {
-    hash = hash * 1000003u ^ std::hash<std::int64_t>()(index);
+    hash = (hash ^ static_cast<std::uint64_t>(index)) * 0x9E3779B97F4A7C15ull;
   }
-  return hash;
+  const std::size_t mask = this->SlotLast.size() - 1;
+  std::size_t slot = static_cast<std::size_t>(hash >> 20) & mask;
+  while (this->SlotLast[slot] >= 0 && this->Bins[this->SlotLast[slot]] != bin)
+  {
+    slot = (slot + 1) & mask;
+  }
+  return slot;
+}
+
+void CoincidentPoints::Rehash(std::size_t slots)
+{
+  std::vector<int> last = std::move(this->SlotLast);
+  this->SlotLast.assign(slots, -1);
+  for (int point : last)
+  {
+    if (point >= 0)
+    {
+      this->SlotLast[this->Slot(this->Bins[point])] = point;
+    }
+  }
+}
+
+void CoincidentPoints::Reserve(std::size_t count)
+{
+  std::size_t slots = 16;
+  while (slots < 2 * count)
+  {
+    slots *= 2;
+  }
+  if (slots > this->SlotLast.size())
+  {
+    this->Rehash(slots);
+  }
+  this->Bins.reserve(count);
+  this->Positions.reserve(count);
+  this->Ids.reserve(count);
+  this->PreviousInBin.reserve(count);
 }
 
 CoincidentPoints::Bin CoincidentPoints::BinOf(const Vector3& p) const
@@ -63,16 +99,19 @@ int CoincidentPoints::Find(const Vector3& p) const
     }
   }
   int found = -1;
+  if (this->SlotLast.empty())
+  {
+    return found;
+  }
   for (int i = 0; i < counts[0]; ++i)
   {
     for (int j = 0; j < counts[1]; ++j)
     {
       for (int k = 0; k < counts[2]; ++k)
       {
-        const auto last =
-          this->LastInBin.find({ bin[0] + steps[0][i], bin[1] + steps[1][j], bin[2] + steps[2][k] });
-        for (int point = last == this->LastInBin.end() ? -1 : last->second; point >= 0;
-             point = this->PreviousInBin[point])
+        const std::size_t slot =
+          this->Slot({ bin[0] + steps[0][i], bin[1] + steps[1][j], bin[2] + steps[2][k] });
+        for (int point = this->SlotLast[slot]; point >= 0; point = this->PreviousInBin[point])
         {
           if ((this->Positions[point] - p).cwiseAbs().maxCoeff() <= this->Tolerance &&
             (found < 0 || this->Ids[point] < found))
@@ -88,11 +127,18 @@ int CoincidentPoints::Find(const Vector3& p) const
 
 void CoincidentPoints::Add(const Vector3& p, int id)
 {
+  if (2 * (this->UsedSlots + 1) > this->SlotLast.size())
+  {
+    this->Rehash(std::max<std::size_t>(16, 2 * this->SlotLast.size()));
+  }
   const int point = static_cast<int>(this->Positions.size());
+  const Bin bin = this->BinOf(p);
+  const std::size_t slot = this->Slot(bin);
+  this->UsedSlots += this->SlotLast[slot] < 0 ? 1 : 0;
+  this->Bins.push_back(bin);
   this->Positions.push_back(p);
   this->Ids.push_back(id);
-  const auto inserted = this->LastInBin.emplace(this->BinOf(p), point);
-  this->PreviousInBin.push_back(inserted.second ? -1 : inserted.first->second);
-  inserted.first->second = point;
+  this->PreviousInBin.push_back(this->SlotLast[slot]);
+  this->SlotLast[slot] = point;
 }
 }

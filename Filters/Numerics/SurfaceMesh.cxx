@@ -3,7 +3,8 @@
 #include "CoincidentPoints.h"
 
 #include <algorithm>
-#include <tuple>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -12,20 +13,114 @@ namespace LaplacianEditing
 {
 namespace
 {
-// Converts (item, key) pairs into compressed rows indexed by key.
-void BuildCompressedRows(int numberOfRows, std::vector<std::pair<int, int>>& keyedItems,
-  std::vector<int>& offsets, std::vector<int>& items)
+// Welds points within CoincidentPoints::RelativeTolerance of each other in every coordinate,
+// numbering the vertices along a Z-order curve of the points. Returns each point's vertex and
+// fills `positions`, each vertex's position (its first point's).
+//
+// Why this order: the numbering, and with it the tie-breaks of distances on regular grids, does
+// not depend on the input's order, and vertices near on the surface are near in memory, which
+// every later pass over one-rings reads (a scan's file order jumps about; lexicographic order
+// kept only x near). Why this way: sorted on Z-order cells at least 4 tolerances wide, twins
+// share a cell, or lie within a tolerance of a cell's border on both sides of it; so a point
+// is compared with the run of its cell, and only points near a border go through a
+// CoincidentPoints table (a table of every point cost a second on a 2.4M-point scan).
+std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points, std::vector<Vector3>& positions)
 {
-  std::sort(keyedItems.begin(), keyedItems.end());
-  keyedItems.erase(std::unique(keyedItems.begin(), keyedItems.end()), keyedItems.end());
-  offsets.assign(numberOfRows + 1, 0);
-  items.resize(keyedItems.size());
-  for (std::size_t i = 0; i < keyedItems.size(); ++i)
+  const double tolerance = CoincidentPoints::RelativeTolerance;
+  const int numberOfPoints = static_cast<int>(points.size());
+  Vector3 low = Vector3::Constant(std::numeric_limits<double>::infinity());
+  Vector3 high = -low;
+  for (const Vector3& p : points)
   {
-    ++offsets[keyedItems[i].first + 1];
-    items[i] = keyedItems[i].second;
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
   }
-  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  const double cells = static_cast<double>((1 << 21) - 1);
+  const Vector3 cellSize =
+    (high - low).unaryExpr([&](double extent) { return std::max(extent / cells, 4.0 * tolerance); });
+  struct Keyed
+  {
+    std::uint64_t Key;
+    int Point;
+  };
+  std::vector<Keyed> order(numberOfPoints);
+  std::vector<char> nearBorder(numberOfPoints, 0);
+  for (int point = 0; point < numberOfPoints; ++point)
+  {
+    std::uint64_t key = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double offset = (points[point][a] - low[a]) / cellSize[a];
+      const double cell = std::max(0.0, std::min(cells, std::floor(offset)));
+      const double fromBorder = std::min(offset - cell, cell + 1.0 - offset) * cellSize[a];
+      nearBorder[point] |= fromBorder <= 2.0 * tolerance;
+      auto bits = static_cast<std::uint64_t>(cell); // its 21 bits spread three apart
+      bits = (bits | bits << 32) & 0x1f00000000ffffull;
+      bits = (bits | bits << 16) & 0x1f0000ff0000ffull;
+      bits = (bits | bits << 8) & 0x100f00f00f00f00full;
+      bits = (bits | bits << 4) & 0x10c30c30c30c30c3ull;
+      bits = (bits | bits << 2) & 0x1249249249249249ull;
+      key |= bits << a;
+    }
+    order[point] = { key, point };
+  }
+  std::sort(order.begin(), order.end(), [&points](const Keyed& a, const Keyed& b) {
+    if (a.Key != b.Key)
+    {
+      return a.Key < b.Key;
+    }
+    const Vector3& p = points[a.Point];
+    const Vector3& q = points[b.Point];
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3) ||
+      (p == q && a.Point < b.Point);
+  });
+  std::vector<int> vertexOfPoint(numberOfPoints, -1);
+  positions.clear();
+  positions.reserve(points.size());
+  // Points near a border, and those of crowded cells (a far outlier makes every cell large),
+  // go through the table.
+  constexpr std::size_t Crowded = 32;
+  CoincidentPoints table(tolerance, low);
+  std::size_t run = 0; // the first of the current cell's points in `order`
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    const int point = order[i].Point;
+    const Vector3& p = points[point];
+    run = order[i].Key == order[run].Key ? run : i;
+    if (i - run == Crowded)
+    {
+      for (std::size_t j = run; j < i; ++j)
+      {
+        const int earlier = order[j].Point;
+        if (!nearBorder[earlier])
+        {
+          nearBorder[earlier] = 1;
+          table.Add(points[earlier], vertexOfPoint[earlier]);
+        }
+      }
+    }
+    nearBorder[point] |= i - run >= Crowded;
+    int vertex = nearBorder[point] ? table.Find(p) : -1;
+    for (std::size_t j = run; j < i && i - run < Crowded; ++j)
+    {
+      const int twin = vertexOfPoint[order[j].Point];
+      if ((points[order[j].Point] - p).cwiseAbs().maxCoeff() <= tolerance && (vertex < 0 || twin < vertex))
+      {
+        vertex = twin;
+      }
+    }
+    if (vertex < 0)
+    {
+      vertex = static_cast<int>(positions.size());
+      positions.push_back(p);
+    }
+    vertexOfPoint[point] = vertex;
+    if (nearBorder[point])
+    {
+      table.Add(p, vertex);
+    }
+  }
+  return vertexOfPoint;
 }
 }
 
@@ -35,35 +130,25 @@ SurfaceMesh SurfaceMesh::FromPolygons(const std::vector<Vector3>& points,
 {
   SurfaceMesh mesh;
   const int numberOfPoints = static_cast<int>(points.size());
-  mesh.VertexOfPoint.resize(numberOfPoints);
   if (mergeCoincidentPoints)
   {
-    std::vector<int> order(numberOfPoints);
-    std::iota(order.begin(), order.end(), 0);
-    auto lexicographic = [&points](int a, int b) {
-      return std::lexicographical_compare(
-        points[a].data(), points[a].data() + 3, points[b].data(), points[b].data() + 3);
-    };
-    std::sort(order.begin(), order.end(), lexicographic);
-    CoincidentPoints merged(CoincidentPoints::RelativeTolerance, Vector3::Zero());
-    for (int point : order)
-    {
-      int vertex = merged.Find(points[point]);
-      if (vertex < 0)
-      {
-        vertex = static_cast<int>(mesh.Positions.size());
-        mesh.Positions.push_back(points[point]);
-        merged.Add(points[point], vertex);
-      }
-      mesh.VertexOfPoint[point] = vertex;
-    }
+    mesh.VertexOfPoint = WeldAlongZOrder(points, mesh.Positions);
   }
   else
   {
     mesh.Positions = points;
+    mesh.VertexOfPoint.resize(numberOfPoints);
     std::iota(mesh.VertexOfPoint.begin(), mesh.VertexOfPoint.end(), 0);
   }
 
+  // Sizes reserved ahead: at millions of triangles, the copies of growing arrays and the page
+  // faults of their fresh memory cost more than filling them.
+  std::size_t fans = 0;
+  for (std::size_t cell = 0; cell + 1 < offsets.size(); ++cell)
+  {
+    fans += static_cast<std::size_t>(std::max<std::int64_t>(offsets[cell + 1] - offsets[cell] - 2, 0));
+  }
+  mesh.Triangles.reserve(fans);
   for (std::size_t cell = 0; cell + 1 < offsets.size(); ++cell)
   {
     const std::int64_t begin = offsets[cell];
@@ -78,89 +163,96 @@ SurfaceMesh SurfaceMesh::FromPolygons(const std::vector<Vector3>& points,
       }
     }
   }
+  mesh.BuildIncidences();
   mesh.OrientTriangles();
   mesh.BuildAdjacency();
   mesh.LabelComponents();
   return mesh;
 }
 
-void SurfaceMesh::BuildAdjacency()
+void SurfaceMesh::BuildIncidences()
 {
-  std::vector<std::pair<int, int>> edges;
-  std::vector<std::pair<int, int>> incidences;
-  edges.reserve(6 * this->Triangles.size());
-  incidences.reserve(3 * this->Triangles.size());
+  // A counting sort of the corners by vertex: each row lists its triangles in order.
+  const int n = this->GetNumberOfVertices();
+  this->TriangleOffsets.assign(n + 1, 0);
+  for (const auto& triangle : this->Triangles)
+  {
+    for (int corner : triangle)
+    {
+      ++this->TriangleOffsets[corner + 1];
+    }
+  }
+  std::partial_sum(
+    this->TriangleOffsets.begin(), this->TriangleOffsets.end(), this->TriangleOffsets.begin());
+  std::vector<int> next(this->TriangleOffsets.begin(), this->TriangleOffsets.end() - 1);
+  this->VertexTriangles.resize(3 * this->Triangles.size());
   for (std::size_t t = 0; t < this->Triangles.size(); ++t)
   {
-    const auto& tri = this->Triangles[t];
-    for (int k = 0; k < 3; ++k)
+    for (int corner : this->Triangles[t])
     {
-      edges.emplace_back(tri[k], tri[(k + 1) % 3]);
-      edges.emplace_back(tri[(k + 1) % 3], tri[k]);
-      incidences.emplace_back(tri[k], static_cast<int>(t));
+      this->VertexTriangles[next[corner]++] = static_cast<int>(t);
     }
   }
-  const int n = this->GetNumberOfVertices();
-  BuildCompressedRows(n, edges, this->NeighborOffsets, this->Neighbors);
-  BuildCompressedRows(n, incidences, this->TriangleOffsets, this->VertexTriangles);
 }
 
-namespace
+void SurfaceMesh::BuildAdjacency()
 {
-// Per triangle, the triangles across its manifold edges, each with whether the two run the edge
-// in the same direction (then one of them must flip).
-std::vector<std::vector<std::pair<int, bool>>> ManifoldNeighbors(
-  const std::vector<std::array<int, 3>>& triangles)
-{
-  // Directed edges (from, to, triangle), sorted so that the triangles of one undirected edge
-  // are adjacent.
-  struct Edge
+  // Each vertex's one-ring: the other corners of its triangles, sorted, without repeats.
+  const int n = this->GetNumberOfVertices();
+  this->NeighborOffsets.assign(n + 1, 0);
+  this->Neighbors.clear();
+  this->Neighbors.reserve(this->VertexTriangles.size() + this->VertexTriangles.size() / 8);
+  std::vector<int> ring;
+  for (int v = 0; v < n; ++v)
   {
-    int Low, High, Triangle;
-    bool Forward; // the triangle runs the edge from Low to High
-    bool operator<(const Edge& other) const
+    ring.clear();
+    for (const int* t = this->TrianglesBegin(v); t != this->TrianglesEnd(v); ++t)
     {
-      return std::tie(Low, High, Triangle) < std::tie(other.Low, other.High, other.Triangle);
+      for (int corner : this->Triangles[*t])
+      {
+        if (corner != v)
+        {
+          ring.push_back(corner);
+        }
+      }
     }
-  };
-  const int count = static_cast<int>(triangles.size());
-  std::vector<Edge> edges;
-  edges.reserve(3 * count);
-  for (int t = 0; t < count; ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = triangles[t][k];
-      const int b = triangles[t][(k + 1) % 3];
-      edges.push_back({ std::min(a, b), std::max(a, b), t, a < b });
-    }
+    std::sort(ring.begin(), ring.end());
+    this->Neighbors.insert(this->Neighbors.end(), ring.begin(), std::unique(ring.begin(), ring.end()));
+    this->NeighborOffsets[v + 1] = static_cast<int>(this->Neighbors.size());
   }
-  std::sort(edges.begin(), edges.end());
-  // Manifold edges only: pairs of triangles across each.
-  std::vector<std::vector<std::pair<int, bool>>> across(count);
-  for (std::size_t i = 0; i + 1 < edges.size(); ++i)
-  {
-    const Edge& e = edges[i];
-    const Edge& f = edges[i + 1];
-    const bool pair = e.Low == f.Low && e.High == f.High &&
-      (i + 2 >= edges.size() || edges[i + 2].Low != e.Low || edges[i + 2].High != e.High) &&
-      (i == 0 || edges[i - 1].Low != e.Low || edges[i - 1].High != e.High);
-    if (pair)
-    {
-      across[e.Triangle].emplace_back(f.Triangle, e.Forward == f.Forward);
-      across[f.Triangle].emplace_back(e.Triangle, e.Forward == f.Forward);
-    }
-  }
-  return across;
-}
 }
 
 void SurfaceMesh::OrientTriangles()
 {
   // Flipping makes the triangles across each manifold edge run it oppositely: each patch
-  // reachable across such edges is walked from a seed.
-  const auto across = ManifoldNeighbors(this->Triangles);
+  // reachable across such edges is walked from a seed. The triangle across edge k of t (from
+  // corner k to k + 1) is the other triangle at both its ends, where there is exactly one.
   const int count = this->GetNumberOfTriangles();
+  std::vector<int> across(3 * static_cast<std::size_t>(count), -1);
+  std::vector<char> sameDirection(across.size(), 0);
+  for (int t = 0; t < count; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = this->Triangles[t][k];
+      const int b = this->Triangles[t][(k + 1) % 3];
+      int others = 0;
+      for (const int* u = this->TrianglesBegin(a); u != this->TrianglesEnd(a); ++u)
+      {
+        const auto& tri = this->Triangles[*u];
+        const int j = tri[0] == b ? 0 : tri[1] == b ? 1 : tri[2] == b ? 2 : -1;
+        if (*u != t && j >= 0 && ++others == 1)
+        {
+          across[3 * t + k] = *u;
+          sameDirection[3 * t + k] = tri[(j + 2) % 3] == a; // u also runs the edge from a to b
+        }
+      }
+      if (others != 1)
+      {
+        across[3 * t + k] = -1; // a boundary or a non-manifold edge
+      }
+    }
+  }
   std::vector<int> flip(count, -1); // -1 unvisited, 0 keep, 1 flip
   std::vector<int> patch, stack;
   for (int seed = 0; seed < count; ++seed)
@@ -176,11 +268,12 @@ void SurfaceMesh::OrientTriangles()
     {
       const int t = stack.back();
       stack.pop_back();
-      for (const auto& [neighbor, sameDirection] : across[t])
+      for (int k = 0; k < 3; ++k)
       {
-        if (flip[neighbor] < 0)
+        const int neighbor = across[3 * t + k];
+        if (neighbor >= 0 && flip[neighbor] < 0)
         {
-          flip[neighbor] = flip[t] ^ static_cast<int>(sameDirection);
+          flip[neighbor] = flip[t] ^ static_cast<int>(sameDirection[3 * t + k]);
           patch.push_back(neighbor);
           stack.push_back(neighbor);
         }

@@ -55,6 +55,7 @@ public:
   int FindNearestVertex(const Vector3& point) const;
 
 private:
+  void BuildIncidences();
   void BuildAdjacency();
   void LabelComponents();
   void OrientTriangles();

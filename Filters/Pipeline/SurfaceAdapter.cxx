@@ -348,40 +348,49 @@ void SurfaceAdapter::MarkRing(
 
 void SurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark)
 {
-  std::unordered_map<vtkIdType, std::int64_t> pointOfInput;
-  this->InputPoints.clear();
+  // The polygons with a marked corner; then their corners and the points in reach, in the
+  // input's order (points in reach that no polygon uses stay, as isolated vertices, so that the
+  // core can say what it thinks of them: a labelled one is refused); then the polygons' corners
+  // renumbered. Three passes, because a scan's corners jump about the input's points: one pass
+  // that numbered points as it met them spent a second in cache misses on a 2.4M-point scan.
+  std::vector<char> kept(input->GetNumberOfPoints(), 0);
   this->InputPolygons.clear();
-  this->Offsets.assign(1, 0);
-  this->Connectivity.clear();
+  std::size_t corners = 0;
   vtkIdType polygon = 0;
   VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
     if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] != 0; }))
     {
-      for (vtkIdType c = 0; c < size; ++c)
-      {
-        const auto inserted =
-          pointOfInput.emplace(ids[c], static_cast<std::int64_t>(this->InputPoints.size()));
-        if (inserted.second)
-        {
-          this->InputPoints.push_back(ids[c]);
-        }
-        this->Connectivity.push_back(inserted.first->second);
-      }
-      this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
+      std::for_each(ids, ids + size, [&](vtkIdType id) { kept[id] = 1; });
       this->InputPolygons.push_back(polygon);
+      corners += static_cast<std::size_t>(size);
     }
     ++polygon;
   });
-  // Points in reach that no polygon uses stay, as isolated vertices, so that the core can say
-  // what it thinks of them (a labelled one is refused).
+  std::vector<int> pointOfInput(input->GetNumberOfPoints(), -1);
+  this->InputPoints.clear();
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
-    if (mark[i] == 1 && !pointOfInput.count(i))
+    if (kept[i] || mark[i] == 1)
     {
-      pointOfInput.emplace(i, static_cast<std::int64_t>(this->InputPoints.size()));
+      pointOfInput[i] = static_cast<int>(this->InputPoints.size());
       this->InputPoints.push_back(i);
     }
   }
+  this->Offsets.assign(1, 0);
+  this->Offsets.reserve(this->InputPolygons.size() + 1);
+  this->Connectivity.clear();
+  this->Connectivity.reserve(corners);
+  auto next = this->InputPolygons.begin();
+  polygon = 0;
+  VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    if (next != this->InputPolygons.end() && *next == polygon)
+    {
+      std::for_each(ids, ids + size, [&](vtkIdType id) { this->Connectivity.push_back(pointOfInput[id]); });
+      this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
+      ++next;
+    }
+    ++polygon;
+  });
 }
 
 std::string SurfaceAdapter::ChooseFrame(vtkPolyData* input)

@@ -91,11 +91,13 @@ TEST(SurfaceMesh, MergesSeamCopiesThatDifferByRounding)
 TEST(GeodesicDistance, FollowsEdgesOnAGrid)
 {
   const SurfaceMesh mesh = MakeGrid(10, 10);
-  const auto d = ComputeGeodesicDistances(mesh, { 0 }, 10.0);
-  EXPECT_NEAR(d[10], 1.0, 1e-12);                // along the bottom edge
-  EXPECT_NEAR(d[120], std::sqrt(2.0), 1e-12);    // along the diagonal edges
-  const auto limited = ComputeGeodesicDistances(mesh, { 0 }, 0.25);
-  EXPECT_TRUE(std::isinf(limited[10]));
+  // The grid's points by row (11 a row); the mesh numbers its vertices in its own order.
+  const auto vertex = [&mesh](int point) { return mesh.GetVertexOfPoint()[point]; };
+  const auto d = ComputeGeodesicDistances(mesh, { vertex(0) }, 10.0);
+  EXPECT_NEAR(d[vertex(10)], 1.0, 1e-12);             // along the bottom edge
+  EXPECT_NEAR(d[vertex(120)], std::sqrt(2.0), 1e-12); // along the diagonal edges
+  const auto limited = ComputeGeodesicDistances(mesh, { vertex(0) }, 0.25);
+  EXPECT_TRUE(std::isinf(limited[vertex(10)]));
 }
 
 namespace
