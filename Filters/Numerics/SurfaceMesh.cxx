@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <utility>
@@ -13,18 +14,83 @@ namespace LaplacianEditing
 {
 namespace
 {
-// Welds points within CoincidentPoints::RelativeTolerance of each other in every coordinate,
-// numbering the vertices along a Z-order curve of the points. Returns each point's vertex and
-// fills `positions`, each vertex's position (its first point's).
-//
-// Why this order: the numbering, and with it the tie-breaks of distances on regular grids, does
-// not depend on the input's order, and vertices near on the surface are near in memory, which
+// Spreads the low 21 bits of `bits` three apart.
+std::uint64_t SpreadBits(std::uint64_t bits)
+{
+  bits &= 0x1fffff;
+  bits = (bits | bits << 32) & 0x1f00000000ffffull;
+  bits = (bits | bits << 16) & 0x1f0000ff0000ffull;
+  bits = (bits | bits << 8) & 0x100f00f00f00f00full;
+  bits = (bits | bits << 4) & 0x10c30c30c30c30c3ull;
+  return (bits | bits << 2) & 0x1249249249249249ull;
+}
+
+// Renumbers the vertices along the Z-order curve of their points' coordinates as the input has
+// them (`inputPoints`; each double mapped to an unsigned integer of the same order, 42 bits of
+// it kept, ties broken by the coordinates), each vertex keyed by its point `representative`.
+// Why those coordinates and those bits: a vertex's rank among any set of vertices then depends
+// on its input coordinates alone, not on the set's bounds nor on the frame the positions were
+// scaled into; a region gathered from ranks, or reached from a selection, numbers its vertices
+// in the order the whole surface does, and breaks ties the same way.
+void NumberAlongAbsoluteZOrder(const std::vector<Vector3>& inputPoints,
+  const std::vector<int>& representative, std::vector<int>& vertexOfPoint,
+  std::vector<Vector3>& positions)
+{
+  struct Keyed
+  {
+    std::uint64_t High, Low;
+    int Vertex;
+  };
+  std::vector<Keyed> order(positions.size());
+  for (std::size_t v = 0; v < positions.size(); ++v)
+  {
+    order[v] = { 0, 0, static_cast<int>(v) };
+    for (int a = 0; a < 3; ++a)
+    {
+      std::uint64_t bits;
+      const double input = inputPoints[representative[v]][a];
+      const double coordinate = input == 0.0 ? 0.0 : input; // -0 is 0
+      std::memcpy(&bits, &coordinate, sizeof bits);
+      bits = (bits >> 63) ? ~bits : bits | (1ull << 63);
+      order[v].High |= SpreadBits(bits >> 43) << (2 - a);
+      order[v].Low |= SpreadBits(bits >> 22) << (2 - a);
+    }
+  }
+  std::sort(order.begin(), order.end(), [&](const Keyed& a, const Keyed& b) {
+    if (a.High != b.High || a.Low != b.Low)
+    {
+      return a.High != b.High ? a.High < b.High : a.Low < b.Low;
+    }
+    const Vector3& p = inputPoints[representative[a.Vertex]];
+    const Vector3& q = inputPoints[representative[b.Vertex]];
+    return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+  });
+  std::vector<int> renumbered(positions.size());
+  std::vector<Vector3> sorted(positions.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    renumbered[order[i].Vertex] = static_cast<int>(i);
+    sorted[i] = positions[order[i].Vertex];
+  }
+  positions.swap(sorted);
+  for (int& vertex : vertexOfPoint)
+  {
+    vertex = vertex < 0 ? vertex : renumbered[vertex];
+  }
+}
+
+// Welds points within CoincidentPoints::RelativeTolerance of each other in every coordinate.
+// Returns each point's vertex and fills `positions`, each vertex's position (the least of its
+// points), numbered by NumberAlongAbsoluteZOrder of `inputPoints`: near on the surface is near in memory, which
 // every later pass over one-rings reads (a scan's file order jumps about; lexicographic order
-// kept only x near). Why this way: sorted on Z-order cells at least 4 tolerances wide, twins
-// share a cell, or lie within a tolerance of a cell's border on both sides of it; so a point
-// is compared with the run of its cell, and only points near a border go through a
+// kept only x near).
+//
+// Why this way: sorted on Z-order cells of the bounds at least 4 tolerances wide, twins share a
+// cell, or lie within a tolerance of a cell's border on both sides of it; so a point is
+// compared with the run of its cell, and only points near a border go through a
 // CoincidentPoints table (a table of every point cost a second on a 2.4M-point scan).
-std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points, std::vector<Vector3>& positions)
+std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points,
+  const std::vector<Vector3>& inputPoints, std::vector<Vector3>& positions)
 {
   const double tolerance = CoincidentPoints::RelativeTolerance;
   const int numberOfPoints = static_cast<int>(points.size());
@@ -54,13 +120,7 @@ std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points, std::vector
       const double cell = std::max(0.0, std::min(cells, std::floor(offset)));
       const double fromBorder = std::min(offset - cell, cell + 1.0 - offset) * cellSize[a];
       nearBorder[point] |= fromBorder <= 2.0 * tolerance;
-      auto bits = static_cast<std::uint64_t>(cell); // its 21 bits spread three apart
-      bits = (bits | bits << 32) & 0x1f00000000ffffull;
-      bits = (bits | bits << 16) & 0x1f0000ff0000ffull;
-      bits = (bits | bits << 8) & 0x100f00f00f00f00full;
-      bits = (bits | bits << 4) & 0x10c30c30c30c30c3ull;
-      bits = (bits | bits << 2) & 0x1249249249249249ull;
-      key |= bits << a;
+      key |= SpreadBits(static_cast<std::uint64_t>(cell)) << a;
     }
     order[point] = { key, point };
   }
@@ -75,8 +135,10 @@ std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points, std::vector
       (p == q && a.Point < b.Point);
   });
   std::vector<int> vertexOfPoint(numberOfPoints, -1);
+  std::vector<int> representative;
   positions.clear();
   positions.reserve(points.size());
+  representative.reserve(points.size());
   // Points near a border, and those of crowded cells (a far outlier makes every cell large),
   // go through the table.
   constexpr std::size_t Crowded = 32;
@@ -113,6 +175,13 @@ std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points, std::vector
     {
       vertex = static_cast<int>(positions.size());
       positions.push_back(p);
+      representative.push_back(point);
+    }
+    else if (std::lexicographical_compare(p.data(), p.data() + 3, positions[vertex].data(),
+               positions[vertex].data() + 3))
+    {
+      positions[vertex] = p; // the least of the twins, whatever the order met them in
+      representative[vertex] = point;
     }
     vertexOfPoint[point] = vertex;
     if (nearBorder[point])
@@ -120,19 +189,21 @@ std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points, std::vector
       table.Add(p, vertex);
     }
   }
+  NumberAlongAbsoluteZOrder(inputPoints, representative, vertexOfPoint, positions);
   return vertexOfPoint;
 }
 }
 
 SurfaceMesh SurfaceMesh::FromPolygons(const std::vector<Vector3>& points,
   const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& connectivity,
-  bool mergeCoincidentPoints)
+  bool mergeCoincidentPoints, const std::vector<Vector3>* inputPoints)
 {
   SurfaceMesh mesh;
   const int numberOfPoints = static_cast<int>(points.size());
   if (mergeCoincidentPoints)
   {
-    mesh.VertexOfPoint = WeldAlongZOrder(points, mesh.Positions);
+    mesh.VertexOfPoint =
+      WeldAlongZOrder(points, inputPoints ? *inputPoints : points, mesh.Positions);
   }
   else
   {

@@ -272,13 +272,16 @@ std::string SurfaceAdapter::Build(
   {
     return error;
   }
-  std::vector<le::Vector3> points(this->InputPoints.size());
+  // The input's own coordinates too: they number the vertices alike whatever the reach.
+  std::vector<le::Vector3> points(this->InputPoints.size()), inputPoints(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
-    points[i] = this->Normalize(input->GetPoint(this->InputPoints[i]));
+    const double* p = input->GetPoint(this->InputPoints[i]);
+    inputPoints[i] = le::Vector3(p[0], p[1], p[2]);
+    points[i] = this->Normalize(p);
   }
   auto mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
-    points, this->Offsets, this->Connectivity, mergeCoincidentPoints));
+    points, this->Offsets, this->Connectivity, mergeCoincidentPoints, &inputPoints));
   if (mesh->GetNumberOfTriangles() == 0)
   {
     return "The input polygons are all degenerate: no triangle has three distinct corners.";

@@ -15,7 +15,9 @@
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <cstdio>
 #include <limits>
 #include <functional>
@@ -62,6 +64,66 @@ TEST(SurfaceMesh, MergesCoincidentPointsAndSplitsQuads)
   const SurfaceMesh split = SurfaceMesh::FromPolygons(points, offsets, connectivity, false);
   EXPECT_EQ(split.GetNumberOfVertices(), 8);
   EXPECT_EQ(split.GetNumberOfComponents(), 2);
+}
+
+TEST(SurfaceMesh, NumbersAnyPartAsTheWholeDoes)
+{
+  // A bumpy 40 x 40 grid, whole, and the quads of a disc of it scaled into another frame (as
+  // the adapter scales each region's part to a unit diagonal), both numbered from the input's
+  // own coordinates: required, the part's vertices come in the whole's order.
+  std::vector<Vector3> points;
+  for (int j = 0; j <= 40; ++j)
+  {
+    for (int i = 0; i <= 40; ++i)
+    {
+      points.emplace_back(0.1 * i - 1.3, 0.1 * j + 0.7, 0.05 * std::sin(1.7 * i) * std::cos(2.3 * j));
+    }
+  }
+  std::vector<std::int64_t> offsets(1, 0), connectivity, partOffsets(1, 0), partConnectivity;
+  for (int j = 0; j < 40; ++j)
+  {
+    for (int i = 0; i < 40; ++i)
+    {
+      const std::int64_t a = j * 41 + i;
+      connectivity.insert(connectivity.end(), { a, a + 1, a + 42, a + 41 });
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+      if ((i - 25) * (i - 25) + (j - 15) * (j - 15) < 100)
+      {
+        partConnectivity.insert(partConnectivity.end(), { a, a + 1, a + 42, a + 41 });
+        partOffsets.push_back(static_cast<std::int64_t>(partConnectivity.size()));
+      }
+    }
+  }
+  // The part keeps its own points only, renumbered, in another frame.
+  std::vector<int> partPoint(points.size(), -1);
+  std::vector<Vector3> kept, scaled;
+  for (std::int64_t& point : partConnectivity)
+  {
+    if (partPoint[point] < 0)
+    {
+      partPoint[point] = static_cast<int>(kept.size());
+      kept.push_back(points[point]);
+      scaled.push_back((points[point] - Vector3(1.1, 1.9, 0.0)) * 0.37);
+    }
+    point = partPoint[point];
+  }
+  const SurfaceMesh whole = SurfaceMesh::FromPolygons(points, offsets, connectivity, true);
+  const SurfaceMesh part =
+    SurfaceMesh::FromPolygons(scaled, partOffsets, partConnectivity, true, &kept);
+  std::vector<std::pair<int, int>> order; // per kept point, its vertex in the part and the whole
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    if (partPoint[k] >= 0)
+    {
+      order.emplace_back(part.GetVertexOfPoint()[partPoint[k]], whole.GetVertexOfPoint()[k]);
+    }
+  }
+  ASSERT_GT(order.size(), 200u);
+  std::sort(order.begin(), order.end());
+  for (std::size_t k = 1; k < order.size(); ++k)
+  {
+    EXPECT_LT(order[k - 1].second, order[k].second) << "part vertex " << order[k].first;
+  }
 }
 
 TEST(SurfaceMesh, MergesSeamCopiesThatDifferByRounding)
