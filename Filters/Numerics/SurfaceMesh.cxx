@@ -25,52 +25,30 @@ std::uint64_t SpreadBits(std::uint64_t bits)
   return (bits | bits << 2) & 0x1249249249249249ull;
 }
 
-// Renumbers the vertices along the Z-order curve of their points' coordinates as the input has
-// them (`inputPoints`; each double mapped to an unsigned integer of the same order, 42 bits of
-// it kept, ties broken by the coordinates), each vertex keyed by its point `representative`.
-// Why those coordinates and those bits: a vertex's rank among any set of vertices then depends
-// on its input coordinates alone, not on the set's bounds nor on the frame the positions were
-// scaled into; a region gathered from ranks, or reached from a selection, numbers its vertices
-// in the order the whole surface does, and breaks ties the same way.
-void NumberAlongAbsoluteZOrder(const std::vector<Vector3>& inputPoints,
+// Renumbers the vertices in the lexicographic order of their points' coordinates as the input
+// has them (`inputPoints`), each vertex keyed by its point `representative`. Why this order:
+// it is the one a translation, a uniform scale and the choice of a part all keep, so that a
+// region reached from a selection or gathered from ranks, or a model far from the origin,
+// numbers its vertices as the whole surface at unit scale does, and every later tie-break
+// (samples, equal distances on regular grids, colourings) falls the same way. (A Z-order
+// keeps neighbours nearer in memory, but no Z-order is kept by all three.)
+void NumberInInputOrder(const std::vector<Vector3>& inputPoints,
   const std::vector<int>& representative, std::vector<int>& vertexOfPoint,
   std::vector<Vector3>& positions)
 {
-  struct Keyed
-  {
-    std::uint64_t High, Low;
-    int Vertex;
-  };
-  std::vector<Keyed> order(positions.size());
-  for (std::size_t v = 0; v < positions.size(); ++v)
-  {
-    order[v] = { 0, 0, static_cast<int>(v) };
-    for (int a = 0; a < 3; ++a)
-    {
-      std::uint64_t bits;
-      const double input = inputPoints[representative[v]][a];
-      const double coordinate = input == 0.0 ? 0.0 : input; // -0 is 0
-      std::memcpy(&bits, &coordinate, sizeof bits);
-      bits = (bits >> 63) ? ~bits : bits | (1ull << 63);
-      order[v].High |= SpreadBits(bits >> 43) << (2 - a);
-      order[v].Low |= SpreadBits(bits >> 22) << (2 - a);
-    }
-  }
-  std::sort(order.begin(), order.end(), [&](const Keyed& a, const Keyed& b) {
-    if (a.High != b.High || a.Low != b.Low)
-    {
-      return a.High != b.High ? a.High < b.High : a.Low < b.Low;
-    }
-    const Vector3& p = inputPoints[representative[a.Vertex]];
-    const Vector3& q = inputPoints[representative[b.Vertex]];
+  std::vector<int> order(positions.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const Vector3& p = inputPoints[representative[a]];
+    const Vector3& q = inputPoints[representative[b]];
     return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
   });
   std::vector<int> renumbered(positions.size());
   std::vector<Vector3> sorted(positions.size());
   for (std::size_t i = 0; i < order.size(); ++i)
   {
-    renumbered[order[i].Vertex] = static_cast<int>(i);
-    sorted[i] = positions[order[i].Vertex];
+    renumbered[order[i]] = static_cast<int>(i);
+    sorted[i] = positions[order[i]];
   }
   positions.swap(sorted);
   for (int& vertex : vertexOfPoint)
@@ -81,9 +59,7 @@ void NumberAlongAbsoluteZOrder(const std::vector<Vector3>& inputPoints,
 
 // Welds points within CoincidentPoints::RelativeTolerance of each other in every coordinate.
 // Returns each point's vertex and fills `positions`, each vertex's position (the least of its
-// points), numbered by NumberAlongAbsoluteZOrder of `inputPoints`: near on the surface is near in memory, which
-// every later pass over one-rings reads (a scan's file order jumps about; lexicographic order
-// kept only x near).
+// points), numbered by NumberInInputOrder.
 //
 // Why this way: sorted on Z-order cells of the bounds at least 4 tolerances wide, twins share a
 // cell, or lie within a tolerance of a cell's border on both sides of it; so a point is
@@ -189,7 +165,7 @@ std::vector<int> WeldAlongZOrder(const std::vector<Vector3>& points,
       table.Add(p, vertex);
     }
   }
-  NumberAlongAbsoluteZOrder(inputPoints, representative, vertexOfPoint, positions);
+  NumberInInputOrder(inputPoints, representative, vertexOfPoint, positions);
   return vertexOfPoint;
 }
 }

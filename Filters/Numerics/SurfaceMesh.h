@@ -26,9 +26,10 @@ public:
   /// With `mergeCoincidentPoints`, points within CoincidentPoints::RelativeTolerance of each
   /// other in every coordinate are one vertex (positions are expected in units of the mesh's
   /// size, as the VTK adapter gives them); without, each input point is its own vertex.
-  /// Merged vertices are numbered along a Z-order curve of `inputPoints` (the points in the
-  /// input's own coordinates, one per point; `points` when null), so that any part of one input
-  /// numbers its vertices in the same order, whatever frame each part was scaled into.
+  /// Merged vertices are numbered in the lexicographic order of `inputPoints` (the points in
+  /// the input's own coordinates, one per point; `points` when null), so that any part of one
+  /// input, moved or scaled, numbers its vertices in the same order, whatever frame each part
+  /// was scaled into.
   static SurfaceMesh FromPolygons(const std::vector<Vector3>& points,
     const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& connectivity,
     bool mergeCoincidentPoints, const std::vector<Vector3>* inputPoints = nullptr);
