@@ -134,7 +134,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   const std::vector<int> patchVertices = this->GrowPatch(mesh, region, patchRow);
   this->WeighEdges(mesh, patchVertices, patchRow, options.Weights, loop);
   this->FindRotationsAroundHandles();
-  this->CoupleRotations(mesh, patchVertices, patchRow, options.RotationSmoothing);
+  this->CoupleRotations(mesh, patchVertices, patchRow, options.RotationSmoothing, options.BendingLength);
   this->Points = PointConstraints();
   std::string error;
   if (options.Points)
@@ -164,6 +164,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
     }
   }
   this->Factor.SetManySolves(true); // a solve every iteration
+  this->Factor.SetParallelFor(loop);
   return this->Factor.Factorize(matrix, options.Backend, options.Ordering,
     options.MaximumFactorBytes, 1, options.Distributed);
 }
@@ -282,15 +283,72 @@ void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
 }
 
 void AsRigidAsPossibleSolver::CoupleRotations(const SurfaceMesh& mesh,
-  const std::vector<int>& patchVertices, const std::vector<int>& patchRow, double smoothing)
+  const std::vector<int>& patchVertices, const std::vector<int>& patchRow, double smoothing,
+  double bendingLength)
 {
   this->RotationCoupling.clear();
+  this->BendingRelief.clear();
   this->ColorOffsets.clear();
   this->ColoredVertices.clear();
-  if (smoothing <= 0.0)
+  if (smoothing > 0.0)
+  {
+    this->SmoothRotations(mesh, patchVertices, patchRow, smoothing);
+  }
+  if (bendingLength > 0.0)
+  {
+    this->BendingRelief.assign(this->Neighbors.size(), 0.0);
+    for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+    {
+      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      {
+        const double scale = std::min(1.0, bendingLength * bendingLength / this->RestEdges[k].squaredNorm());
+        this->BendingRelief[k] =
+          this->Neighbors[k] < this->NumberOfEnergyVertices ? 0.5 * (1.0 - scale) * this->Weights[k] : 0.0;
+      }
+    }
+    if (std::all_of(this->BendingRelief.begin(), this->BendingRelief.end(), [](double r) { return r == 0.0; }))
+    {
+      this->BendingRelief.clear(); // every edge as short as the fine ones: plain ARAP
+    }
+  }
+  if (this->RotationCoupling.empty() && this->BendingRelief.empty())
   {
     return;
   }
+  // Greedy colors, each vertex the first its earlier neighbours leave free, then the vertices
+  // bucketed by color.
+  std::vector<int> colors(this->NumberOfEnergyVertices, 0);
+  int numberOfColors = 0;
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    std::vector<char> taken(numberOfColors + 1, 0);
+    for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+    {
+      if (this->Neighbors[k] < i)
+      {
+        taken[colors[this->Neighbors[k]]] = 1;
+      }
+    }
+    colors[i] = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    numberOfColors = std::max(numberOfColors, colors[i] + 1);
+  }
+  this->ColorOffsets.assign(numberOfColors + 1, 0);
+  for (int color : colors)
+  {
+    ++this->ColorOffsets[color + 1];
+  }
+  std::partial_sum(this->ColorOffsets.begin(), this->ColorOffsets.end(), this->ColorOffsets.begin());
+  std::vector<int> next(this->ColorOffsets.begin(), this->ColorOffsets.end() - 1);
+  this->ColoredVertices.resize(this->NumberOfEnergyVertices);
+  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
+  {
+    this->ColoredVertices[next[colors[i]]++] = i;
+  }
+}
+
+void AsRigidAsPossibleSolver::SmoothRotations(const SurfaceMesh& mesh,
+  const std::vector<int>& patchVertices, const std::vector<int>& patchRow, double smoothing)
+{
   // The ROI's area: each triangle with an ROI vertex, counted at the first of them.
   const int n = this->NumberOfROIVertices;
   const std::vector<Vector3>& p = mesh.GetPositions();
@@ -323,35 +381,6 @@ void AsRigidAsPossibleSolver::CoupleRotations(const SurfaceMesh& mesh,
         this->RotationCoupling[k] = scale * (1.0 / valence(i) + 1.0 / valence(j));
       }
     }
-  }
-  // Greedy colors, each vertex the first its earlier neighbours leave free, then the vertices
-  // bucketed by color.
-  std::vector<int> colors(this->NumberOfEnergyVertices, 0);
-  int numberOfColors = 0;
-  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
-  {
-    std::vector<char> taken(numberOfColors + 1, 0);
-    for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
-    {
-      if (this->Neighbors[k] < i)
-      {
-        taken[colors[this->Neighbors[k]]] = 1;
-      }
-    }
-    colors[i] = static_cast<int>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
-    numberOfColors = std::max(numberOfColors, colors[i] + 1);
-  }
-  this->ColorOffsets.assign(numberOfColors + 1, 0);
-  for (int color : colors)
-  {
-    ++this->ColorOffsets[color + 1];
-  }
-  std::partial_sum(this->ColorOffsets.begin(), this->ColorOffsets.end(), this->ColorOffsets.begin());
-  std::vector<int> next(this->ColorOffsets.begin(), this->ColorOffsets.end() - 1);
-  this->ColoredVertices.resize(this->NumberOfEnergyVertices);
-  for (int i = 0; i < this->NumberOfEnergyVertices; ++i)
-  {
-    this->ColoredVertices[next[colors[i]]++] = i;
   }
 }
 
@@ -507,7 +536,7 @@ double AsRigidAsPossibleSolver::Rotate(const std::vector<Vector3>& patch,
   rotations.resize(this->NumberOfEnergyVertices);
   const bool seed = static_cast<int>(quaternions.size()) != this->NumberOfEnergyVertices;
   quaternions.resize(this->NumberOfEnergyVertices);
-  if (!this->RotationCoupling.empty())
+  if (!this->RotationCoupling.empty() || !this->BendingRelief.empty())
   {
     return this->RotateCoupled(patch, rotations, quaternions, work, loop, seed);
   }
@@ -604,28 +633,53 @@ double AsRigidAsPossibleSolver::RotateCoupled(const std::vector<Vector3>& patch,
       rotations[i] = quaternions[i].toRotationMatrix();
     }
   });
-  for (int sweep = 0; sweep < CoupledSweeps; ++sweep)
+  // Smoothed rotations spread a turn one ring a sweep; the bending relief alone only corrects
+  // each ring's rotation for its neighbours', which one sweep does.
+  const int sweeps = this->RotationCoupling.empty() ? 1 : CoupledSweeps;
+  for (int sweep = 0; sweep < sweeps; ++sweep)
   {
     for (std::size_t color = 0; color + 1 < this->ColorOffsets.size(); ++color)
     {
       loop(this->ColorOffsets[color], this->ColorOffsets[color + 1], [&](int first, int last) {
-        for (int c = first; c < last; ++c)
+        // A block at a time, the rotations refined together (vectorized across the block).
+        constexpr int Block = 16;
+        Eigen::Matrix3d coupled[Block];
+        Eigen::Quaterniond blockRotations[Block];
+        bool converged[Block];
+        for (int begin = first; begin < last; begin += Block)
         {
-          const int i = this->ColoredVertices[c];
-          Eigen::Matrix3d coupled = deformations[i];
-          for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+          const int size = std::min(Block, last - begin);
+          for (int b = 0; b < size; ++b)
           {
-            if (this->RotationCoupling[k] > 0.0)
+            const int i = this->ColoredVertices[begin + b];
+            coupled[b] = deformations[i];
+            for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
             {
-              coupled += this->RotationCoupling[k] * rotations[this->Neighbors[k]];
+              const Eigen::Matrix3d& neighbor = rotations[this->Neighbors[k]];
+              if (!this->RotationCoupling.empty() && this->RotationCoupling[k] > 0.0)
+              {
+                coupled[b] += this->RotationCoupling[k] * neighbor;
+              }
+              if (!this->BendingRelief.empty() && this->BendingRelief[k] > 0.0)
+              {
+                coupled[b].noalias() -=
+                  this->BendingRelief[k] * (neighbor * this->RestEdges[k]) * this->RestEdges[k].transpose();
+              }
             }
+            blockRotations[b] = quaternions[i];
           }
-          if (!RefineClosestRotation(coupled, quaternions[i]))
+          RefineClosestRotations(coupled, blockRotations, converged, size);
+          for (int b = 0; b < size; ++b)
           {
-            quaternions[i] = ClosestRotation(coupled);
-            RefineClosestRotation(coupled, quaternions[i]);
+            const int i = this->ColoredVertices[begin + b];
+            if (!converged[b])
+            {
+              blockRotations[b] = ClosestRotation(coupled[b]);
+              RefineClosestRotation(coupled[b], blockRotations[b]);
+            }
+            quaternions[i] = blockRotations[b];
+            rotations[i] = blockRotations[b].toRotationMatrix();
           }
-          rotations[i] = quaternions[i].toRotationMatrix();
         }
       });
     }
@@ -641,12 +695,18 @@ double AsRigidAsPossibleSolver::RotateCoupled(const std::vector<Vector3>& patch,
 
 double AsRigidAsPossibleSolver::CouplingResidual(const std::vector<Eigen::Matrix3d>& rotations, int i) const
 {
+  // Each edge's share: half of the coupling, minus half of the relief.
   double residual = 0.0;
   for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
   {
-    if (this->RotationCoupling[k] > 0.0)
+    const int j = this->Neighbors[k];
+    if (!this->RotationCoupling.empty() && this->RotationCoupling[k] > 0.0)
     {
-      residual += 0.5 * this->RotationCoupling[k] * (rotations[i] - rotations[this->Neighbors[k]]).squaredNorm();
+      residual += 0.5 * this->RotationCoupling[k] * (rotations[i] - rotations[j]).squaredNorm();
+    }
+    if (!this->BendingRelief.empty() && this->BendingRelief[k] > 0.0)
+    {
+      residual -= 0.5 * this->BendingRelief[k] * ((rotations[i] - rotations[j]) * this->RestEdges[k]).squaredNorm();
     }
   }
   return residual;

@@ -37,6 +37,17 @@
 // a color, since no two of its vertices are neighbours): every fit lowers the energy, so it
 // still never rises. Why several sweeps: the couplings spread a rotation a ring per sweep, and
 // the global step is the iteration's cost.
+//
+// A scaled bending resistance (DeformationOptions::BendingLength h), for a coarse proxy of a
+// finer mesh (RegionProxy.h): per edge, sum_{i->j} w |e' - R_i e|^2 is
+// 2 w |e' - (R_i + R_j) e / 2|^2 + w |(R_i - R_j) e|^2 / 2, a stretching term and a bending
+// term that grows with the square of the edge length, so that a coarse mesh is stiffer in
+// bending than the fine one it stands for, by the square of their spacings' ratio (a proxy at
+// 5 times the spacing, plain, bent so differently that its converged shape carried 4.5 times
+// the fine converged energy). With s = min(1, (h / |e|)^2) per edge, the energy subtracts
+// (1 - s) w |(R_i - R_j) e|^2 / 2 per edge,
+// which keeps the global step and couples the rotations: the local step runs the coupled
+// sweeps, with -(1 - s) w R_j e e^T / 2 added to each ring's covariance.
 #ifndef LaplacianEditing_AsRigidAsPossibleSolver_h
 #define LaplacianEditing_AsRigidAsPossibleSolver_h
 
@@ -78,6 +89,9 @@ struct ArapOptions
   /// sqrt(r)) but oscillates along the slow modes, and a held edit would slosh instead of
   /// settling.
   bool Extrapolate = true;
+  /// The solve is a drag step: a large region's proxy iterates (ProxyArapSolver), where a
+  /// solve that is not one settles the full-resolution shape.
+  bool Dragging = false;
 };
 
 using Quaternions = std::vector<Eigen::Quaterniond, Eigen::aligned_allocator<Eigen::Quaterniond>>;
@@ -168,6 +182,8 @@ public:
     const ParallelFor& loop, const PointTargets* points = nullptr) const;
 
   const SparseCholesky& GetFactor() const { return this->Factor; }
+  /// The global step's relative residual where it iterates (SolverBackend::Multigrid).
+  void SetSolveTolerance(double tolerance) { this->Factor.SetIterativeTolerance(tolerance); }
   const PointConstraints& GetPoints() const { return this->Points; }
 
 private:
@@ -179,8 +195,11 @@ private:
   void WeighEdges(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
     const std::vector<int>& patchRow, LaplacianWeights type, const ParallelFor& loop);
   void FindRotationsAroundHandles();
-  // The couplings beta_ij of smoothed rotations at `smoothing` (alpha); none at 0.
+  // The couplings beta_ij of smoothed rotations at `smoothing` (alpha), none at 0, and the
+  // bending relief (1 - s_ij) w_ij / 2 for `bendingLength` (see above), none at 0.
   void CoupleRotations(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
+    const std::vector<int>& patchRow, double smoothing, double bendingLength);
+  void SmoothRotations(const SurfaceMesh& mesh, const std::vector<int>& patchVertices,
     const std::vector<int>& patchRow, double smoothing);
   std::string ChooseUnknowns(const EditRegion& region);
   Eigen::SparseMatrix<double> AssembleFreeLaplacian(const ParallelFor& loop) const;
@@ -256,6 +275,7 @@ private:
   std::vector<Vector3> RestEdges; // rest position of the vertex minus its neighbour's
   std::vector<Vector3> RestEdgeSums; // per energy vertex, its edges' weighted sum
   std::vector<double> RotationCoupling; // per edge, beta_ij (0 to the ring's ring); empty: none
+  std::vector<double> BendingRelief; // per edge, (1 - s_ij) w_ij / 2 (0 to the ring's ring); empty: none
   std::vector<int> ColorOffsets; // the energy vertices by color, for the coupled sweeps
   std::vector<int> ColoredVertices;
   double RestScale = 0.0;

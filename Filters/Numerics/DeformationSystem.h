@@ -65,6 +65,11 @@ struct DeformationOptions
   /// As-rigid-as-possible mode: alpha of smoothed rotations (AsRigidAsPossibleSolver.h, CGAL's
   /// SRE_ARAP); 0, the default, is plain ARAP, as CGAL's default.
   double RotationSmoothing = 0.0;
+  /// As-rigid-as-possible mode: the edge length whose resistance to bending the energy keeps.
+  /// ARAP resists bending in proportion to the square of its edges' lengths, so a coarse proxy
+  /// of a finer mesh bends as that mesh does when its longer edges' resistance is scaled by
+  /// (BendingLength / length)^2 (AsRigidAsPossibleSolver.h). 0, the default, is plain ARAP.
+  double BendingLength = 0.0;
 
   bool operator==(const DeformationOptions& other) const
   {
@@ -76,7 +81,7 @@ struct DeformationOptions
       this->LeastSquares == other.LeastSquares && (this->Points != nullptr) == (other.Points != nullptr) &&
       this->PointsVersion == other.PointsVersion && this->PointWeight == other.PointWeight &&
       this->Bending == other.Bending && this->SplinePrior == other.SplinePrior &&
-      this->RotationSmoothing == other.RotationSmoothing;
+      this->RotationSmoothing == other.RotationSmoothing && this->BendingLength == other.BendingLength;
   }
   bool operator!=(const DeformationOptions& other) const { return !(*this == other); }
 };

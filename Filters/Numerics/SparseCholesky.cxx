@@ -1,5 +1,6 @@
 #include "SparseCholesky.h"
 
+#include "AlgebraicMultigrid.h"
 #include "Stopwatch.h"
 
 #include <Eigen/SparseCholesky>
@@ -21,6 +22,7 @@ struct SparseCholesky::Backend
   // New values in the analysed pattern; false if they are not positive definite or the backend
   // cannot (a distributed factor).
   virtual bool Refactor(const SparseMatrix&) { return false; }
+  virtual void SetTolerance(double) {}
 };
 
 namespace
@@ -51,7 +53,7 @@ bool SparseCholesky::IsAvailable(SolverBackend backend)
 #ifdef LAPLACIAN_EDITING_HAS_CHOLMOD
   return backend != SolverBackend::Distributed;
 #else
-  return backend == SolverBackend::SimplicialLDLT;
+  return backend == SolverBackend::SimplicialLDLT || backend == SolverBackend::Multigrid;
 #endif
 }
 
@@ -134,6 +136,39 @@ std::unique_ptr<SparseCholesky::Backend> FactorWithEigen(
   return backend;
 }
 
+// No factor: multigrid-preconditioned conjugate gradients, from the last solution (a
+// local-global iteration's consecutive solves are near each other).
+struct MultigridBackend : SparseCholesky::Backend
+{
+  AlgebraicMultigrid Hierarchy;
+  double Tolerance = 1e-8;
+  mutable AlgebraicMultigrid::Block Last;
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const override
+  {
+    AlgebraicMultigrid::Block b = AlgebraicMultigrid::Block::Zero(rhs.rows(), 3);
+    b.leftCols(rhs.cols()) = rhs;
+    if (this->Last.rows() != rhs.rows())
+    {
+      this->Last.setZero(rhs.rows(), 3);
+    }
+    constexpr int MaximumIterations = 200;
+    this->Hierarchy.Solve(b, this->Last, this->Tolerance, MaximumIterations, loop);
+    return this->Last.leftCols(rhs.cols());
+  }
+  void SetTolerance(double tolerance) override { this->Tolerance = tolerance; }
+};
+
+std::unique_ptr<SparseCholesky::Backend> SetUpMultigrid(
+  const SparseMatrix& matrix, double tolerance, const ParallelFor& loop, FactorReport& report)
+{
+  auto backend = std::make_unique<MultigridBackend>();
+  backend->Tolerance = tolerance;
+  const Stopwatch watch;
+  report.Error = backend->Hierarchy.Build(matrix, loop);
+  report.AnalysisSeconds = watch.Seconds();
+  return report.Error.empty() ? std::move(backend) : nullptr;
+}
+
 struct DistributedBackend : SparseCholesky::Backend
 {
   std::unique_ptr<DistributedFactor> Factor;
@@ -192,6 +227,10 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
   {
     this->Impl = FactorWithEigen(matrix, report);
   }
+  if (backend == SolverBackend::Multigrid)
+  {
+    this->Impl = SetUpMultigrid(matrix, this->IterativeTolerance, this->Loop, report);
+  }
   // Too large for this process: its share of a factor across all of them may fit.
   this->Distributed = distributed &&
     (backend == SolverBackend::Distributed ||
@@ -220,6 +259,15 @@ std::string SparseCholesky::Refactorize(const SparseMatrix& matrix)
     return NotPositiveDefinite;
   }
   return {};
+}
+
+void SparseCholesky::SetIterativeTolerance(double tolerance)
+{
+  this->IterativeTolerance = tolerance;
+  if (this->Impl)
+  {
+    this->Impl->SetTolerance(tolerance);
+  }
 }
 
 Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const

@@ -1,8 +1,11 @@
 // Factor once, solve many times: the kernel of interactive editing (Section 8).
 //
 // Backends: CHOLMOD's supernodal Cholesky (CholmodFactor), which uses BLAS threads for the
-// dense supernodes, Eigen's own SimplicialLDLT as the dependency-free fallback, and a factor
-// spread across processes (DistributedSolver) for regions too large for one.
+// dense supernodes, Eigen's own SimplicialLDLT as the dependency-free fallback, a factor
+// spread across processes (DistributedSolver) for regions too large for one, and no factor at
+// all: conjugate gradients preconditioned by algebraic multigrid (AlgebraicMultigrid), set up
+// once in a fraction of a factorization's time, for the regions whose factor would take longer
+// to compute than an edit may wait (Documentation/performance.md).
 #ifndef LaplacianEditing_SparseCholesky_h
 #define LaplacianEditing_SparseCholesky_h
 
@@ -21,7 +24,8 @@ enum class SolverBackend
 {
   Cholmod,
   SimplicialLDLT,
-  Distributed // the DistributedSolver handed to Factorize
+  Distributed, // the DistributedSolver handed to Factorize
+  Multigrid    // AlgebraicMultigrid: each solve iterates from the last solution
 };
 
 /// Fill-reducing orderings (CHOLMOD only; SimplicialLDLT always uses AMD).
@@ -66,8 +70,15 @@ public:
   /// (CholmodFactor::SetManySolves).
   void SetManySolves(bool many) { this->ManySolves = many; }
 
+  /// Multigrid: a solve stops when every column's residual is at most this fraction of its
+  /// residual at the start, the last solve's solution (default 1e-8).
+  void SetIterativeTolerance(double tolerance);
+  /// How the multigrid backend's set-up loops run (serial by default).
+  void SetParallelFor(ParallelFor loop) { this->Loop = std::move(loop); }
+
   /// Solves for every column of `rhs` with the current factor. With CHOLMOD, solves for up to
-  /// four columns run independent subtrees of the factor through `loop`.
+  /// four columns run independent subtrees of the factor through `loop`. Multigrid solves up
+  /// to three columns, from the last solve's solution.
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop = SerialFor) const;
 
   bool IsFactorized() const;
@@ -95,6 +106,8 @@ private:
   double ParallelShare = 0.0;
   bool Distributed = false;
   bool ManySolves = false;
+  double IterativeTolerance = 1e-8;
+  ParallelFor Loop = SerialFor;
 };
 }
 

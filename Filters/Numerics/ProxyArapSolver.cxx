@@ -1,0 +1,115 @@
+#include "ProxyArapSolver.h"
+
+namespace LaplacianEditing
+{
+namespace
+{
+// The global step's conjugate gradients stop once they cut the residual of their start, the
+// last step's solution, by this factor: the closer the iteration comes, the more exact its
+// steps. At 1e-2 a first step can raise the energy, which stops the iteration; 1e-4 converges
+// a rigid motion to 4e-11 (TestLargeRegions) in as many iterations as the factor does.
+constexpr double SettleTolerance = 1e-4;
+}
+
+std::string ProxyArapSolver::Build(const SurfaceMesh& mesh, const EditRegion& region,
+  const DeformationOptions& options, int nodes, const ParallelFor& loop)
+{
+  this->CoarseIterate = ArapIterate();
+  this->FineIterate = ArapIterate();
+  this->Dragged = false;
+  std::string error = this->Proxy.Build(mesh, region, nodes, loop);
+  if (!error.empty())
+  {
+    return error;
+  }
+  DeformationOptions coarse = options;
+  coarse.BendingLength = this->Proxy.GetEdgeLength();
+  coarse.Backend = SparseCholesky::IsAvailable(SolverBackend::Cholmod) ? SolverBackend::Cholmod
+                                                                        : SolverBackend::SimplicialLDLT;
+  error = this->Coarse.Build(this->Proxy.GetMesh(), this->Proxy.GetRegion(), coarse, loop);
+  if (!error.empty())
+  {
+    return "the region's proxy: " + error;
+  }
+  DeformationOptions fine = options;
+  fine.Backend = SolverBackend::Multigrid;
+  this->Fine.SetSolveTolerance(SettleTolerance);
+  this->Base = this->Proxy.GetRest();
+  this->BaseNodes = this->Proxy.RestShape();
+  return this->Fine.Build(mesh, region, fine, loop);
+}
+
+RegionProxy::NodeShape ProxyArapSolver::Nodes(const std::vector<AffineMap>& handleMaps) const
+{
+  const EditRegion& region = this->Proxy.GetRegion();
+  RegionProxy::NodeShape shape;
+  shape.Points = this->CoarseIterate.Points;
+  shape.Turns.resize(region.GetNumberOfVertices());
+  for (int r = 0; r < region.GetNumberOfVertices(); ++r)
+  {
+    // A handle's node turns as its handle's map.
+    const int group = region.HandleGroups[r];
+    if (group < 0)
+    {
+      shape.Turns[r] = this->CoarseIterate.Rotations[r].toRotationMatrix();
+    }
+    else if (group < static_cast<int>(handleMaps.size()))
+    {
+      shape.Turns[r] = handleMaps[group].leftCols<3>();
+    }
+    else
+    {
+      shape.Turns[r].setIdentity();
+    }
+  }
+  return shape;
+}
+
+ArapResult ProxyArapSolver::Drag(const std::vector<AffineMap>& handleMaps,
+  const ArapOptions& options, Positions& roiPositions, const ParallelFor& loop)
+{
+  if (this->CoarseIterate.Points.rows() != this->Proxy.GetRegion().GetNumberOfVertices())
+  {
+    this->CoarseIterate = this->Coarse.InitialGuess(handleMaps);
+    this->Coarse.Solve(handleMaps, this->CoarseIterate, ArapOptions{ 0 }, loop); // its rotations
+  }
+  else if (!this->Dragged && this->FineIterate.Points.rows() > 0)
+  {
+    // A drag after a settle moves the settled shape by the nodes' motion from here on.
+    this->Base = this->FineIterate.Points;
+    this->BaseNodes = this->Nodes(this->LastMaps);
+  }
+  const ArapResult result = this->Coarse.Solve(handleMaps, this->CoarseIterate, options, loop);
+  this->Proxy.Prolong(this->Base, this->BaseNodes, this->Nodes(handleMaps), handleMaps, roiPositions, loop);
+  this->DraggedShape = roiPositions;
+  this->LastMaps = handleMaps;
+  this->Dragged = true;
+  return result;
+}
+
+ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
+  const ArapOptions& options, Positions& roiPositions, const ParallelFor& loop)
+{
+  if (!this->Dragged && this->FineIterate.Points.rows() == 0)
+  {
+    // A first solve without a drag starts from the proxy's solve at these handles.
+    ArapOptions proxy = options;
+    proxy.Extrapolate = false;
+    this->Drag(handleMaps, proxy, roiPositions, loop);
+  }
+  if (this->Dragged)
+  {
+    // The full-resolution iteration starts from the dragged shape, its rotations seeded by
+    // exact polar decompositions there.
+    this->FineIterate = ArapIterate();
+    this->FineIterate.Points = this->DraggedShape;
+    this->Dragged = false;
+  }
+  ArapOptions settle = options;
+  settle.Extrapolate = false; // the handles are where the drag left them
+  const ArapResult result = this->Fine.Solve(handleMaps, this->FineIterate, settle, loop);
+  roiPositions = this->FineIterate.Points;
+  this->LastMaps = handleMaps;
+  return result;
+}
+}

@@ -1,0 +1,68 @@
+// As-rigid-as-possible editing of a region of any size: a drag costs what a small region costs,
+// and the release settles at full resolution without a factorization (Documentation/
+// how-it-works.md, "Regions of any size").
+//
+//  - Set-up: the region's proxy (RegionProxy), its own ARAP system factored (small), and the
+//    full-resolution system with algebraic multigrid in place of a factor (AlgebraicMultigrid):
+//    seconds less than factoring a region of hundreds of thousands of vertices.
+//  - Drag: the proxy iterates, with its bending scaled to the fine mesh's (ARAP's resistance
+//    to bending grows with the square of the edges' length; DeformationOptions::BendingLength),
+//    and its motion since the drag began moves the shape the drag began from, the details
+//    turning with the nodes. A drag that follows a settle so starts from the settled shape.
+//  - Settle: the full-resolution local-global iteration from the dragged shape, each global
+//    step a few multigrid-preconditioned conjugate gradients from the last one's solution.
+#ifndef LaplacianEditing_ProxyArapSolver_h
+#define LaplacianEditing_ProxyArapSolver_h
+
+#include "AsRigidAsPossibleSolver.h"
+#include "RegionProxy.h"
+
+#include <string>
+#include <vector>
+
+namespace LaplacianEditing
+{
+class ProxyArapSolver
+{
+public:
+  /// Builds the proxy of about `nodes` nodes and both systems. Returns an error, empty on
+  /// success.
+  std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
+    const DeformationOptions& options, int nodes, const ParallelFor& loop = SerialFor);
+
+  /// A drag step: the proxy iterates from its last state (at most options.MaximumIterations),
+  /// and `roiPositions` receives the shape. The result's energy is the proxy's.
+  ArapResult Drag(const std::vector<AffineMap>& handleMaps, const ArapOptions& options,
+    Positions& roiPositions, const ParallelFor& loop = SerialFor);
+
+  /// Full-resolution iterations from the current shape (the last drag's, or the last
+  /// settle's), at most options.MaximumIterations.
+  ArapResult Settle(const std::vector<AffineMap>& handleMaps, const ArapOptions& options,
+    Positions& roiPositions, const ParallelFor& loop = SerialFor);
+
+  /// Whether a drag came after the last settle.
+  bool IsDragged() const { return this->Dragged; }
+
+  const RegionProxy& GetProxy() const { return this->Proxy; }
+  /// Bytes held by the proxy's factor (the full-resolution system has none).
+  double GetFactorBytes() const { return this->Coarse.GetFactor().GetFactorBytes(); }
+
+private:
+  // The proxy's nodes as the coarse iterate and the handle maps have them.
+  RegionProxy::NodeShape Nodes(const std::vector<AffineMap>& handleMaps) const;
+
+  RegionProxy Proxy;
+  AsRigidAsPossibleSolver Coarse;
+  AsRigidAsPossibleSolver Fine;
+  ArapIterate CoarseIterate;
+  ArapIterate FineIterate;
+  // Where the current drag began: the fine shape and the nodes.
+  Positions Base;
+  RegionProxy::NodeShape BaseNodes;
+  std::vector<AffineMap> LastMaps;
+  Positions DraggedShape;
+  bool Dragged = false;
+};
+}
+
+#endif

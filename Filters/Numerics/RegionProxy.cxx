@@ -1,0 +1,472 @@
+#include "RegionProxy.h"
+
+#include "GeodesicDistance.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace LaplacianEditing
+{
+namespace
+{
+// Nodes cover their cells at about this density: the area of a cell over the square of the
+// spacing (a hexagonal packing gives 0.87; a greedy sampling leaves gaps between discs).
+constexpr double CellAreaOverSpacingSquared = 1.1;
+// A vertex's weights reach the nodes within this many of their spacings.
+constexpr double SupportOverSpacing = 1.8;
+// The spacing grows with the distance from the handles' borders at this rate, from the surface's
+// own edge length to the spacing asked for: the fine shape bends most sharply along those
+// borders, where a uniform proxy left 9 times the converged energy (a 143k-vertex region of
+// scan:3:Armadillo.ply on 4,632 nodes).
+constexpr double Grading = 0.3;
+// The band of fixed vertices sampled around the ROI, in spacings.
+constexpr double BandOverSpacing = 2.5;
+
+// Wendland's C2 function, 1 at 0, 0 from 1 on.
+double Wendland(double t)
+{
+  if (t >= 1.0)
+  {
+    return 0.0;
+  }
+  const double s = 1.0 - t;
+  return s * s * s * s * (4.0 * t + 1.0);
+}
+}
+
+std::string RegionProxy::Build(
+  const SurfaceMesh& mesh, const EditRegion& region, int nodes, const ParallelFor& loop)
+{
+  if (region.GetNumberOfVertices() == 0 || nodes < 4)
+  {
+    return "a proxy needs a region and at least 4 nodes";
+  }
+  // The largest spacing from the ROI's area and the nodes asked for; the smallest, the ROI's
+  // mean edge length.
+  std::vector<char> inRegion(mesh.GetNumberOfVertices(), 0);
+  for (int v : region.Vertices)
+  {
+    inRegion[v] = 1;
+  }
+  double area = 0.0;
+  const auto& p = mesh.GetPositions();
+  for (const auto& t : mesh.GetTriangles())
+  {
+    const int corners = inRegion[t[0]] + inRegion[t[1]] + inRegion[t[2]];
+    area += corners / 3.0 * 0.5 * (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]).norm();
+  }
+  double edges = 0.0;
+  long count = 0;
+  for (int v : region.Vertices)
+  {
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w, ++count)
+    {
+      edges += (p[*w] - p[v]).norm();
+    }
+  }
+  this->EdgeLength = count > 0 ? edges / count : 0.0;
+  this->Spacing = std::max(this->EdgeLength, std::sqrt(area / (CellAreaOverSpacingSquared * nodes)));
+  const std::vector<char> sampled = this->SampledVertices(mesh, region, BandOverSpacing * this->Spacing);
+  this->Sample(mesh, sampled);
+  const std::string error = this->Triangulate(mesh, region);
+  if (!error.empty())
+  {
+    return error;
+  }
+  this->Weigh(mesh, region, loop);
+  return {};
+}
+
+std::vector<char> RegionProxy::SampledVertices(
+  const SurfaceMesh& mesh, const EditRegion& region, double band) const
+{
+  // The ROI, and the fixed vertices within `band` of it along edges.
+  // 2 marks a handle's vertex, 3 one on a handle's border, which Sample takes first.
+  std::vector<char> sampled(mesh.GetNumberOfVertices(), 0);
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
+  {
+    sampled[region.Vertices[k]] = region.Roles[k] == VertexRole::Handle ? 2 : 1;
+  }
+  for (int v : region.Vertices)
+  {
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v) && sampled[v] == 2; ++w)
+    {
+      sampled[v] = sampled[*w] < 2 ? 3 : 2;
+    }
+  }
+  std::vector<int> border;
+  for (int v : region.Vertices)
+  {
+    for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+    {
+      if (!sampled[*w])
+      {
+        border.push_back(v);
+        break;
+      }
+    }
+  }
+  GeodesicSearch search(mesh, DistanceMethod::EdgePaths);
+  std::vector<int> reached;
+  search.Visit(border, band, [&](int v, double) { reached.push_back(v); },
+    [&](int v) { return sampled[v] == 0; });
+  for (int v : reached)
+  {
+    sampled[v] = 1;
+  }
+  return sampled;
+}
+
+void RegionProxy::Sample(const SurfaceMesh& mesh, const std::vector<char>& sampled)
+{
+  // Each vertex's spacing: Grading times its distance from the handles' borders, between the
+  // edge length and Spacing.
+  const int n = mesh.GetNumberOfVertices();
+  std::vector<double> spacing(n, this->Spacing);
+  GeodesicSearch search(mesh, DistanceMethod::EdgePaths);
+  std::vector<int> borders;
+  for (int v = 0; v < n; ++v)
+  {
+    if (sampled[v] == 3)
+    {
+      borders.push_back(v);
+    }
+  }
+  search.Visit(borders, this->Spacing / Grading,
+    [&](int v, double d) { spacing[v] = std::max(this->EdgeLength, std::min(this->Spacing, Grading * d)); },
+    [&](int v) { return sampled[v] != 0; });
+  // Greedy: a vertex farther than its spacing from every node so far becomes a node; a bounded
+  // search from it keeps each vertex's nearest node. Its radius reaches every vertex whose
+  // spacing it can cover: spacing changes by at most Grading per unit of distance. Handles'
+  // borders come first, then the rest of the handles, so that every handle has nodes of its
+  // own, along its border; cells do not cross a handle's border.
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  this->Owner.assign(n, -1);
+  this->Seeds.clear();
+  this->NodeSpacing.clear();
+  auto visit = [&](int v) {
+    if (nearest[v] <= spacing[v])
+    {
+      return;
+    }
+    const int node = static_cast<int>(this->Seeds.size());
+    this->Seeds.push_back(v);
+    this->NodeSpacing.push_back(spacing[v]);
+    search.Visit({ v }, spacing[v] / (1.0 - Grading),
+      [&](int w, double d) {
+        if (d < nearest[w])
+        {
+          nearest[w] = d;
+          this->Owner[w] = node;
+        }
+      },
+      [&](int w) { return sampled[w] != 0 && (sampled[w] >= 2) == (sampled[v] >= 2); });
+  };
+  for (const char pass : { 3, 2, 1 })
+  {
+    for (int v = 0; v < n; ++v)
+    {
+      if (sampled[v] == pass)
+      {
+        visit(v);
+      }
+    }
+  }
+}
+
+std::string RegionProxy::Triangulate(const SurfaceMesh& mesh, const EditRegion& region)
+{
+  // Cells that meet no other two at a triangle (a cell inside another) have no place in the
+  // dual: their vertices go to the neighbouring cell they share most edges with, until none is
+  // left.
+  std::vector<std::array<int, 3>> triangles;
+  for (int round = 0;; ++round)
+  {
+    triangles.clear();
+    const int count = static_cast<int>(this->Seeds.size());
+    std::vector<char> used(count, 0);
+    for (const auto& t : mesh.GetTriangles())
+    {
+      const std::array<int, 3> cells = { this->Owner[t[0]], this->Owner[t[1]], this->Owner[t[2]] };
+      if (cells[0] >= 0 && cells[1] >= 0 && cells[2] >= 0 && cells[0] != cells[1] &&
+        cells[1] != cells[2] && cells[0] != cells[2])
+      {
+        // Rotated to start at its smallest node, which keeps its orientation.
+        const int first = static_cast<int>(std::min_element(cells.begin(), cells.end()) - cells.begin());
+        triangles.push_back({ cells[first], cells[(first + 1) % 3], cells[(first + 2) % 3] });
+        used[cells[0]] = used[cells[1]] = used[cells[2]] = 1;
+      }
+    }
+    if (std::all_of(used.begin(), used.end(), [](char u) { return u != 0; }))
+    {
+      break;
+    }
+    if (round == 8)
+    {
+      return "the region's proxy has cells that meet no others; the region is too thin for "
+             "its proxy's spacing";
+    }
+    // Absorb the unused cells, then renumber the nodes.
+    std::vector<std::vector<int>> shared(count);
+    for (int v = 0; v < mesh.GetNumberOfVertices(); ++v)
+    {
+      const int cell = this->Owner[v];
+      if (cell < 0 || used[cell])
+      {
+        continue;
+      }
+      for (const int* w = mesh.NeighborsBegin(v); w != mesh.NeighborsEnd(v); ++w)
+      {
+        if (this->Owner[*w] >= 0 && this->Owner[*w] != cell)
+        {
+          shared[cell].push_back(this->Owner[*w]);
+        }
+      }
+    }
+    std::vector<int> into(count);
+    std::iota(into.begin(), into.end(), 0);
+    for (int cell = 0; cell < count; ++cell)
+    {
+      auto& neighbours = shared[cell];
+      if (used[cell] || neighbours.empty())
+      {
+        continue;
+      }
+      std::sort(neighbours.begin(), neighbours.end());
+      int best = neighbours[0], bestCount = 0;
+      for (std::size_t a = 0; a < neighbours.size();)
+      {
+        std::size_t b = a;
+        while (b < neighbours.size() && neighbours[b] == neighbours[a])
+        {
+          ++b;
+        }
+        if (static_cast<int>(b - a) > bestCount)
+        {
+          best = neighbours[a];
+          bestCount = static_cast<int>(b - a);
+        }
+        a = b;
+      }
+      into[cell] = best;
+    }
+    std::vector<int> renumbered(count, -1);
+    std::vector<int> seeds;
+    std::vector<double> spacings;
+    for (int cell = 0; cell < count; ++cell)
+    {
+      if (into[cell] == cell)
+      {
+        renumbered[cell] = static_cast<int>(seeds.size());
+        seeds.push_back(this->Seeds[cell]);
+        spacings.push_back(this->NodeSpacing[cell]);
+      }
+    }
+    for (int& owner : this->Owner)
+    {
+      // An absorbed cell's target may itself be absorbed this round: follow to a kept one.
+      int cell = owner;
+      for (int hops = 0; cell >= 0 && into[cell] != cell && hops < count; ++hops)
+      {
+        cell = into[cell];
+      }
+      owner = cell >= 0 ? renumbered[cell] : -1;
+    }
+    this->Seeds = std::move(seeds);
+    this->NodeSpacing = std::move(spacings);
+  }
+  std::sort(triangles.begin(), triangles.end(), [](const std::array<int, 3>& a, const std::array<int, 3>& b) {
+    std::array<int, 3> x = a, y = b;
+    std::sort(x.begin(), x.end());
+    std::sort(y.begin(), y.end());
+    return x < y;
+  });
+  triangles.erase(std::unique(triangles.begin(), triangles.end(),
+                    [](std::array<int, 3> a, std::array<int, 3> b) {
+                      std::sort(a.begin(), a.end());
+                      std::sort(b.begin(), b.end());
+                      return a == b;
+                    }),
+    triangles.end());
+  std::vector<Vector3> positions(this->Seeds.size());
+  for (std::size_t node = 0; node < this->Seeds.size(); ++node)
+  {
+    positions[node] = mesh.GetPositions()[this->Seeds[node]];
+  }
+  std::vector<std::int64_t> offsets(triangles.size() + 1), connectivity;
+  connectivity.reserve(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    connectivity.insert(connectivity.end(), triangles[t].begin(), triangles[t].end());
+    offsets[t + 1] = static_cast<std::int64_t>(connectivity.size());
+  }
+  this->Mesh = SurfaceMesh::FromPolygons(positions, offsets, connectivity, false);
+
+  // The proxy's region: the nodes of ROI vertices.
+  std::vector<int> roiRow(mesh.GetNumberOfVertices(), -1);
+  for (int k = 0; k < region.GetNumberOfVertices(); ++k)
+  {
+    roiRow[region.Vertices[k]] = k;
+  }
+  this->Region = EditRegion();
+  this->Region.NumberOfHandleGroups = region.NumberOfHandleGroups;
+  this->Region.Radius = region.Radius;
+  this->Region.BordersFixedPart = region.BordersFixedPart;
+  this->RoiRowOfNode.assign(this->Seeds.size(), -1);
+  for (std::size_t node = 0; node < this->Seeds.size(); ++node)
+  {
+    const int row = roiRow[this->Seeds[node]];
+    if (row < 0)
+    {
+      continue;
+    }
+    const bool handle = region.Roles[row] == VertexRole::Handle;
+    this->RoiRowOfNode[node] = this->Region.GetNumberOfVertices();
+    this->Region.Vertices.push_back(static_cast<int>(node));
+    this->Region.Roles.push_back(handle ? VertexRole::Handle : VertexRole::Free);
+    this->Region.HandleGroups.push_back(handle ? region.HandleGroups[row] : -1);
+    this->Region.RelativeDistances.push_back(region.RelativeDistances.empty() ? 0.0 : region.RelativeDistances[row]);
+  }
+  return {};
+}
+
+void RegionProxy::Weigh(const SurfaceMesh& mesh, const EditRegion& region, const ParallelFor& loop)
+{
+  const int n = region.GetNumberOfVertices();
+  this->HandleGroups = region.HandleGroups;
+  this->Rest.resize(n, 3);
+  // Each row's candidates: its cell's node and the nodes two rings around it on the proxy.
+  std::vector<std::vector<std::pair<int, double>>> rows(n);
+  loop(0, n, [&](int first, int last) {
+    std::vector<int> candidates;
+    for (int k = first; k < last; ++k)
+    {
+      const int v = region.Vertices[k];
+      const Vector3 p = mesh.GetPositions()[v];
+      this->Rest.row(k) = p.transpose();
+      if (region.HandleGroups[k] >= 0)
+      {
+        continue;
+      }
+      const int own = this->Owner[v];
+      candidates.assign(1, own);
+      for (const int* a = this->Mesh.NeighborsBegin(own); a != this->Mesh.NeighborsEnd(own); ++a)
+      {
+        candidates.push_back(*a);
+        for (const int* b = this->Mesh.NeighborsBegin(*a); b != this->Mesh.NeighborsEnd(*a); ++b)
+        {
+          candidates.push_back(*b);
+        }
+      }
+      std::sort(candidates.begin(), candidates.end());
+      candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+      double total = 0.0;
+      auto& row = rows[k];
+      for (int node : candidates)
+      {
+        const double w = Wendland(
+          (p - this->Mesh.GetPositions()[node]).norm() / (SupportOverSpacing * this->NodeSpacing[node]));
+        total += w;
+        if (w > 0.0 && this->RoiRowOfNode[node] >= 0)
+        {
+          row.emplace_back(this->RoiRowOfNode[node], w);
+        }
+      }
+      for (auto& entry : row)
+      {
+        entry.second /= total;
+      }
+    }
+  });
+  this->WeightOffsets.assign(n + 1, 0);
+  for (int k = 0; k < n; ++k)
+  {
+    this->WeightOffsets[k + 1] = this->WeightOffsets[k] + static_cast<int>(rows[k].size());
+  }
+  this->WeightNodes.resize(this->WeightOffsets[n]);
+  this->Weights.resize(this->WeightOffsets[n]);
+  for (int k = 0; k < n; ++k)
+  {
+    for (std::size_t e = 0; e < rows[k].size(); ++e)
+    {
+      this->WeightNodes[this->WeightOffsets[k] + e] = rows[k][e].first;
+      this->Weights[this->WeightOffsets[k] + e] = rows[k][e].second;
+    }
+  }
+}
+
+RegionProxy::NodeShape RegionProxy::RestShape() const
+{
+  NodeShape rest;
+  const int nodes = this->Region.GetNumberOfVertices();
+  rest.Points.resize(nodes, 3);
+  for (int r = 0; r < nodes; ++r)
+  {
+    rest.Points.row(r) = this->Mesh.GetPositions()[this->Region.Vertices[r]].transpose();
+  }
+  rest.Turns.assign(nodes, Eigen::Matrix3d::Identity());
+  return rest;
+}
+
+void RegionProxy::Prolong(const Positions& base, const NodeShape& from, const NodeShape& to,
+  const std::vector<AffineMap>& handleMaps, Positions& roiPositions, const ParallelFor& loop) const
+{
+  // Each node's motion as a map of base points to their displacement, M b + u with
+  // M = T T0^-1 - I and u = c - c0 - M c0, blended per row.
+  const int nodes = this->Region.GetNumberOfVertices();
+  std::vector<AffineMap>& motions = this->Motions;
+  motions.resize(nodes);
+  loop(0, nodes, [&](int first, int last) {
+    for (int r = first; r < last; ++r)
+    {
+      const Eigen::Matrix3d turn = to.Turns[r] * from.Turns[r].inverse() - Eigen::Matrix3d::Identity();
+      const Vector3 c0 = from.Points.row(r).transpose();
+      motions[r].leftCols<3>() = turn;
+      motions[r].col(3) = to.Points.row(r).transpose() - c0 - turn * c0;
+    }
+  });
+  const int n = static_cast<int>(this->Rest.rows());
+  roiPositions.resize(n, 3);
+  loop(0, n, [&](int first, int last) {
+    for (int k = first; k < last; ++k)
+    {
+      const int group = this->HandleGroups[k];
+      if (group >= 0)
+      {
+        const Vector3 p = this->Rest.row(k).transpose();
+        const Vector3 target = group < static_cast<int>(handleMaps.size())
+          ? Vector3(handleMaps[group].leftCols<3>() * p + handleMaps[group].col(3))
+          : p;
+        roiPositions.row(k) = target.transpose();
+        continue;
+      }
+      AffineMap blend = AffineMap::Zero();
+      for (int e = this->WeightOffsets[k]; e < this->WeightOffsets[k + 1]; ++e)
+      {
+        blend.noalias() += this->Weights[e] * motions[this->WeightNodes[e]];
+      }
+      const Vector3 b = base.row(k).transpose();
+      roiPositions.row(k) = (b + blend.leftCols<3>() * b + blend.col(3)).transpose();
+    }
+  });
+}
+
+void RegionProxy::Interpolate(const Positions& nodeValues, Positions& fineValues, const ParallelFor& loop) const
+{
+  const int n = static_cast<int>(this->Rest.rows());
+  fineValues.resize(n, nodeValues.cols());
+  loop(0, n, [&](int first, int last) {
+    for (int k = first; k < last; ++k)
+    {
+      fineValues.row(k).setZero();
+      for (int e = this->WeightOffsets[k]; e < this->WeightOffsets[k + 1]; ++e)
+      {
+        fineValues.row(k) += this->Weights[e] * nodeValues.row(this->WeightNodes[e]);
+      }
+    }
+  });
+}
+}
