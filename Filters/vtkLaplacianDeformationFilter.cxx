@@ -293,6 +293,8 @@ lep::SolverSettings vtkLaplacianDeformationFilter::Settings()
   settings.Extrapolation = this->Extrapolation != 0;
   settings.Dragging = this->Dragging != 0;
   settings.DragARAPIterations = this->DragARAPIterations;
+  settings.LargeRegionVertices = this->LargeRegionVertices;
+  settings.ProxyNodes = this->ProxyNodes;
   return settings;
 }
 
@@ -578,6 +580,8 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
   os << indent << "RotationSmoothing: " << this->RotationSmoothing << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
   os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
+  os << indent << "LargeRegionVertices: " << this->LargeRegionVertices << "\n";
+  os << indent << "ProxyNodes: " << this->ProxyNodes << "\n";
   os << indent << "Convergence: " << this->Convergence << "\n";
   os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
   os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";

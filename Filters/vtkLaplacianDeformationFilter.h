@@ -390,8 +390,9 @@ public:
 
   /**
    * As-rigid-as-possible mode: the most local-global iterations per update (0 to 10000).
-   * Default 30: enough for large regions to come within a few percent of the converged energy
-   * (Documentation/quality.md).
+   * Default 30: brings regions of up to 12k vertices within 2% of the converged energy
+   * (Documentation/quality.md); a region of hundreds of thousands of vertices needs far more
+   * (610k: 1.73 times the converged energy after 30, Documentation/performance.md).
    */
   vtkSetClampMacro(ARAPIterations, int, 0, 10000);
   vtkGetMacro(ARAPIterations, int);
@@ -434,6 +435,23 @@ public:
    */
   vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
   vtkGetMacro(DragARAPIterations, int);
+
+  /**
+   * As-rigid-as-possible mode: a region of more vertices than this is dragged on a proxy of
+   * about ProxyNodes nodes, at the cost of a small region whatever its size, and settled at
+   * full resolution by multigrid, without a factorization (Documentation/how-it-works.md,
+   * "Regions of any size"). 0 factors every region, as smaller ones are. Default 60000.
+   */
+  vtkSetClampMacro(LargeRegionVertices, int, 0, VTK_INT_MAX);
+  vtkGetMacro(LargeRegionVertices, int);
+
+  /**
+   * As-rigid-as-possible mode: about how many nodes a large region's proxy has (100 to
+   * 1000000); more follow the full-resolution shape more closely during a drag, at the cost of
+   * a larger region's drag step. Default 20000.
+   */
+  vtkSetClampMacro(ProxyNodes, int, 100, 1000000);
+  vtkGetMacro(ProxyNodes, int);
 
   /**
    * As-rigid-as-possible mode: Anderson acceleration mixes the last iterates, with a safeguard
@@ -676,6 +694,8 @@ protected:
   double RotationSmoothing = 0.0;
   vtkTypeBool Dragging = 0;
   int DragARAPIterations = 2;
+  int LargeRegionVertices = 60000;
+  int ProxyNodes = 20000;
   double Convergence = 1e-3;
   vtkTypeBool Acceleration = 1;
   vtkTypeBool Extrapolation = 1;

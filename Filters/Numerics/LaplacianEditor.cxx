@@ -34,6 +34,7 @@ void LaplacianEditor::SetMesh(std::shared_ptr<const SurfaceMesh> mesh)
   this->Frames.reset();
   this->Implicit.reset();
   this->Arap.reset();
+  this->LargeArap.reset();
   this->LastFailure.reset();
 }
 
@@ -45,7 +46,8 @@ double LaplacianEditor::GetFactorBytes() const
   }
   return this->System.GetFactor().GetFactorBytes() +
     (this->Implicit ? this->Implicit->GetFactor().GetFactorBytes() : 0.0) +
-    (this->Arap ? this->Arap->GetFactor().GetFactorBytes() : 0.0);
+    (this->Arap ? this->Arap->GetFactor().GetFactorBytes() : 0.0) +
+    (this->LargeArap ? this->LargeArap->GetFactorBytes() : 0.0);
 }
 
 bool LaplacianEditor::IsFactorDistributed() const
@@ -129,6 +131,7 @@ EditStatus LaplacianEditor::UpdateRegion(const RegionRequest& region,
     this->Frames.reset();
     this->Implicit.reset();
     this->Arap.reset();
+    this->LargeArap.reset();
     this->System = DeformationSystem();
     this->PointCorrection = Positions();
     this->NumberOfFactorizationAttempts += system.LeastSquares ? 1 : 0;
@@ -205,6 +208,18 @@ std::string LaplacianEditor::BuildRotationModel(const RotationOptions& rotation,
                                        : this->System.GetRestDifferentialCoordinates());
     built = true;
   }
+  else if (rotation.Mode == RotationMode::AsRigidAsPossible && this->IsLarge(rotation))
+  {
+    if (!this->LargeArap || this->LargeArapNodes != rotation.ProxyNodes)
+    {
+      const std::string error = this->BuildLargeArap(rotation.ProxyNodes);
+      if (!error.empty())
+      {
+        return error;
+      }
+      built = true;
+    }
+  }
   else if (rotation.Mode == RotationMode::AsRigidAsPossible && !this->Arap)
   {
     const std::string error = this->BuildArap();
@@ -261,6 +276,28 @@ std::string LaplacianEditor::BuildArap()
   return {};
 }
 
+bool LaplacianEditor::IsLarge(const RotationOptions& rotation) const
+{
+  return rotation.LargeRegionVertices > 0 && !this->SystemBuiltFrom.Points &&
+    this->Region.GetNumberOfVertices() > rotation.LargeRegionVertices;
+}
+
+std::string LaplacianEditor::BuildLargeArap(int proxyNodes)
+{
+  auto large = std::make_unique<ProxyArapSolver>();
+  ++this->NumberOfFactorizationAttempts;
+  const std::string error = large->Build(*this->Mesh, this->Region, this->SystemBuiltFrom, proxyNodes, this->Loop);
+  if (!error.empty())
+  {
+    return error;
+  }
+  ++this->NumberOfFactorizations;
+  this->AnalysisSeconds = this->FactorizationSeconds = 0.0;
+  this->LargeArap = std::move(large);
+  this->LargeArapNodes = proxyNodes;
+  return {};
+}
+
 bool LaplacianEditor::IsAffineInHandleMaps() const
 {
   const RotationMode mode = this->Rotation.Mode;
@@ -270,7 +307,10 @@ bool LaplacianEditor::IsAffineInHandleMaps() const
 
 const PointConstraints& LaplacianEditor::GetPoints() const
 {
-  return this->SystemBuiltFrom.LeastSquares ? this->System.GetPoints() : this->Arap->GetPoints();
+  static const PointConstraints none;
+  return this->SystemBuiltFrom.LeastSquares ? this->System.GetPoints()
+    : this->Arap                            ? this->Arap->GetPoints()
+                                            : none;
 }
 
 Positions LaplacianEditor::FitPoints(
@@ -308,7 +348,13 @@ EditStatus LaplacianEditor::Solve(
     return status;
   }
   const RotationOptions& rotation = this->Rotation;
-  if (rotation.Mode == RotationMode::AsRigidAsPossible)
+  if (rotation.Mode == RotationMode::AsRigidAsPossible && this->IsLarge(rotation))
+  {
+    this->LastArap = rotation.Arap.Dragging
+      ? this->LargeArap->Drag(handleMaps, rotation.Arap, roiPositions, this->Loop)
+      : this->LargeArap->Settle(handleMaps, rotation.Arap, roiPositions, this->Loop);
+  }
+  else if (rotation.Mode == RotationMode::AsRigidAsPossible)
   {
     // A drag continues from the last result; a new region starts from the rest edges.
     if (this->ArapWarmStart.Points.rows() != this->Region.GetNumberOfVertices())

@@ -22,6 +22,7 @@
 #include "ImplicitSimilaritySystem.h"
 #include "LocalFrames.h"
 #include "ParallelFor.h"
+#include "ProxyArapSolver.h"
 #include "SmoothNormals.h"
 
 #include <cstdint>
@@ -79,6 +80,11 @@ struct RotationOptions
   ImplicitFormulation Formulation;
   /// As-rigid-as-possible mode: the work per solve.
   ArapOptions Arap;
+  /// As-rigid-as-possible mode: a region of more vertices than this (0: none) drags on a proxy
+  /// of about ProxyNodes nodes and settles by multigrid (ProxyArapSolver), where a smaller one
+  /// factors its system; regions held by points are always factored.
+  int LargeRegionVertices = 0;
+  int ProxyNodes = 20000;
 };
 
 /// What an Update rebuilt (bit flags).
@@ -135,6 +141,9 @@ public:
 
   /// As-rigid-as-possible mode: what the last solve did.
   const ArapResult& GetLastArapResult() const { return this->LastArap; }
+  /// As-rigid-as-possible mode: the large region's solver, where the region is one (null
+  /// otherwise).
+  const ProxyArapSolver* GetProxySolver() const { return this->LargeArap.get(); }
 
   const EditRegion& GetRegion() const { return this->Region; }
 
@@ -158,6 +167,9 @@ private:
     const std::function<std::vector<int>()>& labels);
   std::string BuildRotationModel(const RotationOptions& rotation, bool& built);
   std::string BuildArap();
+  std::string BuildLargeArap(int proxyNodes);
+  // Whether the region is edited as a large one in the as-rigid-as-possible mode.
+  bool IsLarge(const RotationOptions& rotation) const;
   // The linear modes' solve (`solve` for some point targets), fitted to `points`.
   Positions FitPoints(
     const std::function<Positions(const Positions&)>& solve, const PointTargets* points);
@@ -184,6 +196,9 @@ private:
   // As-rigid-as-possible mode, and its last result (the next solve's start).
   std::unique_ptr<AsRigidAsPossibleSolver> Arap;
   ArapIterate ArapWarmStart;
+  // As-rigid-as-possible mode on a large region, and the proxy size it was built with.
+  std::unique_ptr<ProxyArapSolver> LargeArap;
+  int LargeArapNodes = 0;
   ArapResult LastArap;
   // Whether the points proved impossible to meet all at once (fit in the least-squares sense).
   bool PointsUnmeetable = false;

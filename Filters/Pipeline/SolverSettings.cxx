@@ -47,6 +47,9 @@ RotationOptions SolverSettings::Rotation(double regionRadius, double scale) cons
   rotation.Arap.Tolerance = this->Settle ? 0.0 : this->Convergence;
   rotation.Arap.Accelerate = this->Acceleration;
   rotation.Arap.Extrapolate = this->Extrapolation;
+  rotation.Arap.Dragging = this->Dragging;
+  rotation.LargeRegionVertices = this->LargeRegionVertices;
+  rotation.ProxyNodes = this->ProxyNodes;
   return rotation;
 }
 

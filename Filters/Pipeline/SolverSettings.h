@@ -46,6 +46,10 @@ struct VTKLAPLACIANEDITINGFILTERS_EXPORT SolverSettings
   /// A drag is going on: each update runs at most DragARAPIterations.
   bool Dragging = false;
   int DragARAPIterations = 2;
+  /// As-rigid-as-possible: regions of more vertices are dragged on a proxy of about
+  /// ProxyNodes nodes and settled by multigrid (0: none).
+  int LargeRegionVertices = 0;
+  int ProxyNodes = 20000;
   /// The update that follows a drag: ARAPIterations in full, without the convergence test,
   /// which the slow tail a drag leaves would pass at once.
   bool Settle = false;
