@@ -392,7 +392,7 @@ public:
    * As-rigid-as-possible mode: the most local-global iterations per update (0 to 10000).
    * Default 30: brings regions of up to 12k vertices within 2% of the converged energy
    * (Documentation/quality.md); a region of hundreds of thousands of vertices needs far more
-   * (610k: 1.73 times the converged energy after 30, Documentation/performance.md).
+   * (610k: 1.64 times the converged energy after 30, Documentation/performance.md).
    */
   vtkSetClampMacro(ARAPIterations, int, 0, 10000);
   vtkGetMacro(ARAPIterations, int);
