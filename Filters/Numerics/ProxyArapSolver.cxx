@@ -7,7 +7,7 @@ namespace
 // The global step's conjugate gradients stop once they cut the residual of their start, the
 // last step's solution, by this factor: the closer the iteration comes, the more exact its
 // steps. At 1e-2 a first step can raise the energy, which stops the iteration; 1e-4 converges
-// a rigid motion to 4e-11 (TestLargeRegions) in as many iterations as the factor does.
+// a rigid motion to 5e-12 (TestLargeRegions), as the factor does.
 constexpr double SettleTolerance = 1e-4;
 }
 
