@@ -81,7 +81,6 @@ ArapResult ProxyArapSolver::Drag(const std::vector<AffineMap>& handleMaps,
   }
   const ArapResult result = this->Coarse.Solve(handleMaps, this->CoarseIterate, options, loop);
   this->Proxy.Prolong(this->Base, this->BaseNodes, this->Nodes(handleMaps), handleMaps, roiPositions, loop);
-  this->DraggedShape = roiPositions;
   this->LastMaps = handleMaps;
   this->Dragged = true;
   return result;
@@ -99,10 +98,11 @@ ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
   }
   if (this->Dragged)
   {
-    // The full-resolution iteration starts from the dragged shape, its rotations seeded by
-    // exact polar decompositions there.
+    // The full-resolution iteration starts from the dragged shape (prolonged again here rather
+    // than copied at every drag step), its rotations seeded by exact polar decompositions there.
     this->FineIterate = ArapIterate();
-    this->FineIterate.Points = this->DraggedShape;
+    this->Proxy.Prolong(this->Base, this->BaseNodes, this->Nodes(this->LastMaps), this->LastMaps,
+      this->FineIterate.Points, loop);
     this->Dragged = false;
   }
   ArapOptions settle = options;

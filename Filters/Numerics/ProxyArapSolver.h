@@ -60,7 +60,6 @@ private:
   Positions Base;
   RegionProxy::NodeShape BaseNodes;
   std::vector<AffineMap> LastMaps;
-  Positions DraggedShape;
   bool Dragged = false;
 };
 }
