@@ -2,12 +2,15 @@
 
 #include "CachedRangePoints.h"
 
+#include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationInformationVectorKey.h"
 #include "vtkInformationVector.h"
 #include "vtkPoints.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <array>
@@ -35,8 +38,10 @@ public:
   using Extremes = std::vector<double>;
   static constexpr int Families = 4; // component ranges, finite ones, norm range, finite one
 
-  // Before the write: the ranges cached, and the changing tuples' ranges.
-  void Capture(vtkDataArray* array, const std::vector<vtkIdType>& changing)
+  // Before the write: the ranges cached, and the changing tuples' ranges (measured unless
+  // given as `known`).
+  void Capture(vtkDataArray* array, const std::vector<vtkIdType>& changing,
+    const std::vector<Extremes>* known = nullptr)
   {
     this->Components = array->GetNumberOfComponents();
     vtkInformation* info = array->HasInformation() ? array->GetInformation() : nullptr;
@@ -44,12 +49,14 @@ public:
     {
       this->Cached[f] = info && Get(info, f, this->Components, this->Ranges[f]);
     }
-    this->Old = Measure(array, [&](auto visit) {
-      for (const vtkIdType id : changing)
-      {
-        visit(id);
-      }
-    });
+    if (known && known->size() == Families)
+    {
+      std::copy(known->begin(), known->end(), this->Old.begin());
+    }
+    else
+    {
+      this->Old = Measure(array, changing);
+    }
   }
 
   // Whether a cached extreme may lie among the changing tuples.
@@ -68,32 +75,28 @@ public:
   // The extremes of the tuples outside `changing` (sorted).
   static std::vector<Extremes> MeasureUnchanged(vtkDataArray* array, const std::vector<vtkIdType>& changing)
   {
-    const std::array<Extremes, Families> unchanged = Measure(array, [&](auto visit) {
-      auto next = changing.begin();
-      for (vtkIdType id = 0; id < array->GetNumberOfTuples(); ++id)
+    std::vector<vtkIdType> ids;
+    ids.reserve(array->GetNumberOfTuples() - changing.size());
+    auto next = changing.begin();
+    for (vtkIdType id = 0; id < array->GetNumberOfTuples(); ++id)
+    {
+      if (next != changing.end() && *next == id)
       {
-        if (next != changing.end() && *next == id)
-        {
-          ++next;
-          continue;
-        }
-        visit(id);
+        ++next;
+        continue;
       }
-    });
+      ids.push_back(id);
+    }
+    const std::array<Extremes, Families> unchanged = Measure(array, ids);
     return { unchanged.begin(), unchanged.end() };
   }
 
   // After the write and Modified(): the ranges that are still known, with the extremes of the
-  // tuples left alone if given.
-  void Restore(vtkDataArray* array, const std::vector<vtkIdType>& changed,
+  // tuples left alone if given. Returns the changed tuples' extremes.
+  std::vector<Extremes> Restore(vtkDataArray* array, const std::vector<vtkIdType>& changed,
     const std::vector<Extremes>* unchanged)
   {
-    const std::array<Extremes, Families> written = Measure(array, [&](auto visit) {
-      for (const vtkIdType id : changed)
-      {
-        visit(id);
-      }
-    });
+    const std::array<Extremes, Families> written = Measure(array, changed);
     for (int f = 0; f < Families; ++f)
     {
       if (!this->Cached[f])
@@ -115,6 +118,7 @@ public:
       }
       Set(array, f, range);
     }
+    return { written.begin(), written.end() };
   }
 
 private:
@@ -178,48 +182,77 @@ private:
     CachedRangePoints::StoreRanges(array, range.data(), Finite(family));
   }
 
-  // The extremes in each family, (min, max) pairs, of the tuples `forEach` visits; none give
-  // (+inf, -inf).
-  template <class ForEach>
-  static std::array<Extremes, Families> Measure(vtkDataArray* array, ForEach forEach)
+  // The extremes in each family, (min, max) pairs, of the tuples `ids`; none give
+  // (+inf, -inf). A drag writes the same hundreds of thousands of tuples at every step, so the
+  // pass runs in parallel on the array's own value type (610k points: 11 ms a pass through
+  // virtual GetTuple before).
+  static std::array<Extremes, Families> Measure(vtkDataArray* array, const std::vector<vtkIdType>& ids)
   {
     const int components = array->GetNumberOfComponents();
     const double inf = std::numeric_limits<double>::infinity();
-    std::array<Extremes, Families> extremes;
+    std::array<Extremes, Families> none;
     for (int f = 0; f < Families; ++f)
     {
-      extremes[f].assign(Norm(f) ? 2 : 2 * components, inf);
-      for (std::size_t i = 1; i < extremes[f].size(); i += 2)
+      none[f].assign(Norm(f) ? 2 : 2 * components, inf);
+      for (std::size_t i = 1; i < none[f].size(); i += 2)
       {
-        extremes[f][i] = -inf;
+        none[f][i] = -inf;
       }
     }
-    std::vector<double> tuple(components);
-    auto include = [](Extremes& e, std::size_t i, double v) {
-      e[i] = std::min(e[i], v);
-      e[i + 1] = std::max(e[i + 1], v);
-    };
-    forEach([&](vtkIdType id) {
-      array->GetTuple(id, tuple.data());
-      double squared = 0.0;
-      bool finite = true;
-      for (int c = 0; c < components; ++c)
-      {
-        include(extremes[0], 2 * c, tuple[c]);
-        if (std::isfinite(tuple[c]))
+    constexpr vtkIdType Chunk = 16384;
+    const vtkIdType count = static_cast<vtkIdType>(ids.size());
+    std::vector<std::array<Extremes, Families>> chunks((count + Chunk - 1) / Chunk, none);
+    auto measure = [&](auto* typed) {
+      const auto tuples = vtk::DataArrayTupleRange(typed);
+      vtkSMPTools::For(0, static_cast<vtkIdType>(chunks.size()), 1, [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType c = begin; c < end; ++c)
         {
-          include(extremes[1], 2 * c, tuple[c]);
+          std::array<Extremes, Families>& extremes = chunks[c];
+          auto include = [](Extremes& e, std::size_t i, double v) {
+            e[i] = std::min(e[i], v);
+            e[i + 1] = std::max(e[i + 1], v);
+          };
+          for (vtkIdType k = c * Chunk; k < std::min(count, (c + 1) * Chunk); ++k)
+          {
+            const auto tuple = tuples[ids[k]];
+            double squared = 0.0;
+            bool finite = true;
+            for (int i = 0; i < components; ++i)
+            {
+              const double value = static_cast<double>(tuple[i]);
+              include(extremes[0], 2 * i, value);
+              if (std::isfinite(value))
+              {
+                include(extremes[1], 2 * i, value);
+              }
+              finite = finite && std::isfinite(value);
+              squared += value * value;
+            }
+            include(extremes[2], 0, std::sqrt(squared));
+            if (finite)
+            {
+              include(extremes[3], 0, std::sqrt(squared));
+            }
+          }
         }
-        finite = finite && std::isfinite(tuple[c]);
-        squared += tuple[c] * tuple[c];
-      }
-      include(extremes[2], 0, std::sqrt(squared));
-      if (finite)
+      });
+    };
+    if (!vtkArrayDispatch::Dispatch::Execute(array, measure))
+    {
+      measure(array);
+    }
+    for (const std::array<Extremes, Families>& chunk : chunks)
+    {
+      for (int f = 0; f < Families; ++f)
       {
-        include(extremes[3], 0, std::sqrt(squared));
+        for (std::size_t i = 0; i + 1 < none[f].size(); i += 2)
+        {
+          none[f][i] = std::min(none[f][i], chunk[f][i]);
+          none[f][i + 1] = std::max(none[f][i + 1], chunk[f][i + 1]);
+        }
       }
-    });
-    return extremes;
+    }
+    return none;
   }
 
   int Components = 0;
@@ -379,7 +412,9 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   }
   const std::vector<vtkIdType>& changing = sameTuples ? buffer.WrittenSorted : merged;
   CachedRanges ranges;
-  ranges.Capture(derived ? buffer.Array.Get() : rest, changing);
+  const bool writtenKnown = sameTuples && buffer.WrittenTime == buffer.Array->GetMTime();
+  ranges.Capture(derived ? buffer.Array.Get() : rest, changing,
+    writtenKnown ? &buffer.WrittenExtremes : nullptr);
   if (derived && !sameTuples)
   {
     for (const vtkIdType id : buffer.Written)
@@ -401,8 +436,10 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   {
     buffer.Points->Modified(); // which, from VTK 9.2, marks the array modified too
   }
-  ranges.Restore(
+  buffer.WrittenExtremes = ranges.Restore(
     buffer.Array, changing, buffer.UnchangedOutside == changing ? &buffer.Unchanged : nullptr);
+  // Those of `ids` alone where `changing` held no other tuple.
+  buffer.WrittenTime = !derived || sameTuples ? buffer.Array->GetMTime() : 0;
 }
 }
 }

@@ -75,6 +75,10 @@ private:
     // extreme.
     std::vector<std::vector<double>> Unchanged;
     std::vector<vtkIdType> UnchangedOutside;
+    // The extremes of the tuples the last update wrote, while the array stays as it left it
+    // (its modification time then): the next write of the same tuples need not measure them.
+    std::vector<std::vector<double>> WrittenExtremes;
+    vtkMTimeType WrittenTime = 0;
     vtkIdType LastUse = 0;
     bool IsFree(const Holders& pipeline) const;
   };

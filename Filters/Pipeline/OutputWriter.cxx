@@ -4,8 +4,10 @@
 #include "NormalRefresher.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkArrayDispatch.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkExecutive.h"
 #include "vtkInformationExecutivePortVectorKey.h"
 #include "vtkInformation.h"
@@ -89,18 +91,31 @@ void OutputWriter::Write(
   const std::uint64_t key = ++this->Writes;
   const std::vector<vtkIdType>& moved = edit ? edit->Moved->Ids : none;
   output->SetPoints(this->Points.Update(rest->GetPoints(), moved, key, [&](vtkDataArray* points) {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        le::Vector3 p =
-          edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
-        if (!edit->Moved->Offsets.empty())
+    // On the array's own value type: a virtual SetTuple per point was 9 ms of a 610k region's
+    // drag step.
+    auto write = [&](auto* typed) {
+      auto tuples = vtk::DataArrayTupleRange<3>(typed);
+      vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          p += edit->Moved->Offsets[i];
+          le::Vector3 p =
+            edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
+          if (!edit->Moved->Offsets.empty())
+          {
+            p += edit->Moved->Offsets[i];
+          }
+          auto tuple = tuples[moved[i]];
+          for (int c = 0; c < 3; ++c)
+          {
+            tuple[c] = p[c];
+          }
         }
-        points->SetTuple(moved[i], p.data());
-      }
-    });
+      });
+    };
+    if (!vtkArrayDispatch::Dispatch::Execute(points, write))
+    {
+      write(points);
+    }
   }));
   const NormalRefresher* normals = edit ? edit->Normals : nullptr;
   if (vtkDataArray* pointNormals = RestNormals(rest->GetPointData()))
