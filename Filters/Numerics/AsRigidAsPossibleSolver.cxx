@@ -974,6 +974,11 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
       result.Converged = true;
       break;
     }
+    if (options.Progress &&
+      !options.Progress(static_cast<double>(result.Iterations) / options.MaximumIterations))
+    {
+      break;
+    }
   }
   return result;
 }

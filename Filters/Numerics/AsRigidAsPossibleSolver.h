@@ -58,6 +58,8 @@
 
 #include <Eigen/Geometry>
 
+#include <functional>
+
 #include <string>
 #include <vector>
 
@@ -92,6 +94,10 @@ struct ArapOptions
   /// The solve is a drag step: a large region's proxy iterates (ProxyArapSolver), where a
   /// solve that is not one settles the full-resolution shape.
   bool Dragging = false;
+  /// Called after each iteration with the share of MaximumIterations done. Returning false
+  /// ends the solve at that iteration's shape (a settle of a large region takes seconds, and
+  /// the user may abort it or grab again).
+  std::function<bool(double)> Progress;
 };
 
 using Quaternions = std::vector<Eigen::Quaterniond, Eigen::aligned_allocator<Eigen::Quaterniond>>;

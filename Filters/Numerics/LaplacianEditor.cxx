@@ -347,7 +347,11 @@ EditStatus LaplacianEditor::Solve(
     status.Error = "the system has point constraints: give a target for each point";
     return status;
   }
-  const RotationOptions& rotation = this->Rotation;
+  RotationOptions rotation = this->Rotation;
+  if (!rotation.Arap.Dragging)
+  {
+    rotation.Arap.Progress = this->Progress;
+  }
   if (rotation.Mode == RotationMode::AsRigidAsPossible && this->IsLarge(rotation))
   {
     this->LastArap = rotation.Arap.Dragging

@@ -162,6 +162,10 @@ public:
   /// How per-move loops over the ROI run (serial by default).
   void SetParallelFor(ParallelFor loop) { this->Loop = std::move(loop); }
 
+  /// As-rigid-as-possible mode: called after each iteration of a solve that is not a drag
+  /// step (ArapOptions::Progress); returning false ends the solve at that iteration's shape.
+  void SetProgress(std::function<bool(double)> progress) { this->Progress = std::move(progress); }
+
 private:
   std::string SelectRegion(const RegionRequest& request,
     const std::function<std::vector<int>()>& labels);
@@ -198,6 +202,7 @@ private:
   ArapIterate ArapWarmStart;
   // As-rigid-as-possible mode on a large region, and the proxy size it was built with.
   std::unique_ptr<ProxyArapSolver> LargeArap;
+  std::function<bool(double)> Progress;
   int LargeArapNodes = 0;
   ArapResult LastArap;
   // Whether the points proved impossible to meet all at once (fit in the least-squares sense).

@@ -94,6 +94,7 @@ ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
     // A first solve without a drag starts from the proxy's solve at these handles.
     ArapOptions proxy = options;
     proxy.Extrapolate = false;
+    proxy.Progress = nullptr; // the settle's own iterations report
     this->Drag(handleMaps, proxy, roiPositions, loop);
   }
   if (this->Dragged)
