@@ -19,6 +19,12 @@ EditPipeline::EditPipeline(vtkAlgorithm* filter, std::function<void(unsigned lon
 {
   this->Writer.SetFilter(filter);
   this->Editor.SetParallelFor(SMPFor);
+  // A settle's iterations report their progress, and an abort ends them at the last shape:
+  // that is the output, a valid edit, and the next update continues from it. The flag is read
+  // after the event too, where an observer of the event sets it.
+  this->Editor.SetProgress([this](double done) {
+    return !this->Aborted(0.9 + 0.1 * done) && !this->Filter->GetAbortExecute();
+  });
 }
 
 void EditPipeline::BeginUpdate()
@@ -192,12 +198,6 @@ bool EditPipeline::Solve(EditSource& source)
     return false;
   }
   this->Maps = std::move(motions.Maps);
-  // A settle's iterations report their progress, and an abort ends them at the last shape:
-  // that is the output, a valid edit, and the next update continues from it.
-  // The flag is read after the event too, where an observer of the event sets it.
-  this->Editor.SetProgress([this](double done) {
-    return !this->Aborted(0.9 + 0.1 * done) && !this->Filter->GetAbortExecute();
-  });
   const Stopwatch watch;
   const EditStatus status = this->Editor.Solve(
     this->Maps, this->Solution, motions.HasPoints ? &motions.Points : nullptr);

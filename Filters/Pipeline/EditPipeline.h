@@ -55,6 +55,9 @@ public:
   /// `filter` reports for the pipeline; `setErrorCode` sets its error code (which vtkAlgorithm
   /// keeps protected).
   EditPipeline(vtkAlgorithm* filter, std::function<void(unsigned long)> setErrorCode);
+  // The editor's progress callback holds this object.
+  EditPipeline(const EditPipeline&) = delete;
+  EditPipeline& operator=(const EditPipeline&) = delete;
 
   /// Starts an update: no error, and the update's facts afresh.
   void BeginUpdate();

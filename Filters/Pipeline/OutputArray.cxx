@@ -190,28 +190,29 @@ private:
   {
     const int components = array->GetNumberOfComponents();
     const double inf = std::numeric_limits<double>::infinity();
-    std::array<Extremes, Families> none;
+    std::array<Extremes, Families> extremes;
     for (int f = 0; f < Families; ++f)
     {
-      none[f].assign(Norm(f) ? 2 : 2 * components, inf);
-      for (std::size_t i = 1; i < none[f].size(); i += 2)
+      extremes[f].assign(Norm(f) ? 2 : 2 * components, inf);
+      for (std::size_t i = 1; i < extremes[f].size(); i += 2)
       {
-        none[f][i] = -inf;
+        extremes[f][i] = -inf;
       }
     }
+    auto include = [](Extremes& e, std::size_t i, double low, double high) {
+      e[i] = std::min(e[i], low);
+      e[i + 1] = std::max(e[i + 1], high);
+    };
+    // Chunks of tuples, each with its own extremes, merged at the end.
     constexpr vtkIdType Chunk = 16384;
     const vtkIdType count = static_cast<vtkIdType>(ids.size());
-    std::vector<std::array<Extremes, Families>> chunks((count + Chunk - 1) / Chunk, none);
+    std::vector<std::array<Extremes, Families>> chunks((count + Chunk - 1) / Chunk, extremes);
     auto measure = [&](auto* typed) {
       const auto tuples = vtk::DataArrayTupleRange(typed);
       vtkSMPTools::For(0, static_cast<vtkIdType>(chunks.size()), 1, [&](vtkIdType begin, vtkIdType end) {
         for (vtkIdType c = begin; c < end; ++c)
         {
-          std::array<Extremes, Families>& extremes = chunks[c];
-          auto include = [](Extremes& e, std::size_t i, double v) {
-            e[i] = std::min(e[i], v);
-            e[i + 1] = std::max(e[i + 1], v);
-          };
+          std::array<Extremes, Families>& chunk = chunks[c];
           for (vtkIdType k = c * Chunk; k < std::min(count, (c + 1) * Chunk); ++k)
           {
             const auto tuple = tuples[ids[k]];
@@ -220,18 +221,18 @@ private:
             for (int i = 0; i < components; ++i)
             {
               const double value = static_cast<double>(tuple[i]);
-              include(extremes[0], 2 * i, value);
+              include(chunk[0], 2 * i, value, value);
               if (std::isfinite(value))
               {
-                include(extremes[1], 2 * i, value);
+                include(chunk[1], 2 * i, value, value);
               }
               finite = finite && std::isfinite(value);
               squared += value * value;
             }
-            include(extremes[2], 0, std::sqrt(squared));
+            include(chunk[2], 0, std::sqrt(squared), std::sqrt(squared));
             if (finite)
             {
-              include(extremes[3], 0, std::sqrt(squared));
+              include(chunk[3], 0, std::sqrt(squared), std::sqrt(squared));
             }
           }
         }
@@ -245,14 +246,13 @@ private:
     {
       for (int f = 0; f < Families; ++f)
       {
-        for (std::size_t i = 0; i + 1 < none[f].size(); i += 2)
+        for (std::size_t i = 0; i + 1 < extremes[f].size(); i += 2)
         {
-          none[f][i] = std::min(none[f][i], chunk[f][i]);
-          none[f][i + 1] = std::max(none[f][i + 1], chunk[f][i + 1]);
+          include(extremes[f], i, chunk[f][i], chunk[f][i + 1]);
         }
       }
     }
-    return none;
+    return extremes;
   }
 
   int Components = 0;

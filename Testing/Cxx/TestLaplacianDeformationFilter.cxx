@@ -240,6 +240,22 @@ TEST(Filter, SmoothedRotationsKeepTheRestMeetTheHandleAndLeaveTheOutside)
   EXPECT_GT(apart, 1e-3);
 }
 
+namespace
+{
+// The plane's ARAP edit, run to convergence, its region made large (a proxy of about 800
+// nodes) when it has more than `largeRegion` vertices (0: never).
+vtkSmartPointer<vtkLaplacianDeformationFilter> ConvergedArapEdit(vtkPolyData* input, int largeRegion)
+{
+  auto filter = PlaneEdit(input);
+  filter->SetRotationModeToAsRigidAsPossible();
+  filter->SetLargeRegionVertices(largeRegion);
+  filter->SetProxyNodes(800);
+  filter->SetARAPIterations(5000);
+  filter->SetConvergence(1e-10);
+  return filter;
+}
+}
+
 TEST(Filter, ALargeRegionDragsOnAProxyAndSettlesAsTheFactoredEditDoes)
 {
   // A 9.6k-vertex region made large (LargeRegionVertices 1000, a proxy of about 800 nodes).
@@ -254,17 +270,8 @@ TEST(Filter, ALargeRegionDragsOnAProxyAndSettlesAsTheFactoredEditDoes)
   temperature->SetNumberOfTuples(input->GetNumberOfPoints());
   temperature->FillValue(36.6f);
   input->GetPointData()->AddArray(temperature);
-  auto edit = [&](int largeRegion) {
-    auto filter = PlaneEdit(input);
-    filter->SetRotationModeToAsRigidAsPossible();
-    filter->SetLargeRegionVertices(largeRegion);
-    filter->SetProxyNodes(800);
-    filter->SetARAPIterations(5000);
-    filter->SetConvergence(1e-10);
-    return filter;
-  };
-  auto factored = edit(0);
-  auto large = edit(1000);
+  auto factored = ConvergedArapEdit(input, 0);
+  auto large = ConvergedArapEdit(input, 1000);
   large->Update();
   ASSERT_GT(large->GetNumberOfROIVertices(), 9000);
   EXPECT_LT(MaxPointDistance(input, large->GetOutput()), 1e-9 * Diagonal(input));
@@ -332,18 +339,12 @@ TEST(Filter, ALargeRegionsSettleReportsProgressStopsWhereAbortedAndConvergesOnTh
   // edit (the handle met to 1e-9 of the diagonal, the outside bit for bit, the edit not lost);
   // a new grab and release then settle to the factored edit's converged shape (1e-4).
   auto input = BumpyPlane(160);
-  auto edit = [&](int largeRegion) {
-    auto filter = PlaneEdit(input);
-    filter->SetRotationModeToAsRigidAsPossible();
-    filter->SetLargeRegionVertices(largeRegion);
-    filter->SetProxyNodes(800);
-    filter->SetARAPIterations(5000);
-    filter->SetConvergence(1e-10);
+  auto factored = ConvergedArapEdit(input, 0);
+  auto large = ConvergedArapEdit(input, 1000);
+  for (vtkLaplacianDeformationFilter* filter : { factored.Get(), large.Get() })
+  {
     filter->SetHandleTransform(Translation(0.05, 0.0, 0.15));
-    return filter;
-  };
-  auto factored = edit(0);
-  auto large = edit(1000);
+  }
   large->Update();
   large->DraggingOn();
   large->Update();
