@@ -151,10 +151,19 @@ double InjectiveDeformation::CornerScaledJacobian(
 double InjectiveDeformation::TetrahedronScaledJacobian(
   const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d)
 {
-  // Every corner sees the same determinant (six times the volume), with its orientation.
-  const double corners[4] = { CornerScaledJacobian(a, b, c, d), CornerScaledJacobian(b, a, d, c),
-    CornerScaledJacobian(c, a, b, d), CornerScaledJacobian(d, a, c, b) };
-  return std::sqrt(2.0) * *std::min_element(corners, corners + 4);
+  // Every corner sees the same determinant (six times the volume), with its orientation, over
+  // the product of its three edges' lengths: the smallest corner is the one of the longest
+  // edges (of the shortest, if inverted).
+  const double ab = (b - a).norm(), ac = (c - a).norm(), ad = (d - a).norm();
+  const double bc = (c - b).norm(), bd = (d - b).norm(), cd = (d - c).norm();
+  const double lengths[4] = { ab * ac * ad, ab * bc * bd, ac * bc * cd, ad * bd * cd };
+  const auto [shortest, longest] = std::minmax_element(lengths, lengths + 4);
+  if (*shortest <= 0.0)
+  {
+    return 0.0;
+  }
+  const double determinant = (b - a).dot((c - a).cross(d - a));
+  return std::sqrt(2.0) * determinant / (determinant > 0.0 ? *longest : *shortest);
 }
 
 std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedra& tetrahedra,

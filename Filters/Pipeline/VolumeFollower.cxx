@@ -227,28 +227,28 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   this->LastEditedTime = edited->GetMTime();
   // Each cell's quality, and the failures: cells around a point left short of its target, and
   // any cell Verdict would see folded that no corner tetrahedron shows (a hexahedron's centre).
+  this->Place();
   const std::vector<vtkIdType>& cells = this->Zone.Cells;
   this->ZoneQuality.resize(cells.size());
   auto position = [this](vtkIdType id) { return this->Position(id); };
+  const std::vector<double>& misses = this->Solver.GetMisses();
+  auto missed = [&](vtkIdType id) {
+    const int row = this->LocalOf[id];
+    return row >= 0 && misses[row] > this->Snap;
+  };
+  const bool anyMissed = this->LastFacts.LargestMiss > this->Snap;
+  std::vector<char> failed(cells.size());
   SMPFor(0, static_cast<int>(cells.size()), [&](int first, int last) {
     for (int k = first; k < last; ++k)
     {
       this->ZoneQuality[k] = this->Mesh.Quality(cells[k], position);
+      failed[k] = this->ZoneQuality[k] <= 0.0 || (anyMissed && this->Mesh.AnyPoint(cells[k], missed));
     }
   });
   this->FailedCells.clear();
-  const std::vector<double>& misses = this->Solver.GetMisses();
   for (std::size_t k = 0; k < cells.size(); ++k)
   {
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    this->Mesh.GetGrid()->GetCellPoints(cells[k], count, ids);
-    const bool missed = this->LastFacts.LargestMiss > this->Snap &&
-      std::any_of(ids, ids + count, [&](vtkIdType id) {
-        const int row = this->LocalOf[id];
-        return row >= 0 && misses[row] > this->Snap;
-      });
-    if (missed || this->ZoneQuality[k] <= 0.0)
+    if (failed[k])
     {
       this->FailedCells.push_back(cells[k]);
     }
@@ -270,17 +270,31 @@ std::string VolumeFollower::FailureWarning() const
     " (mesh units) short of their edited positions (cell array EditFailed).";
 }
 
+void VolumeFollower::Place()
+{
+  const std::vector<double>& misses = this->Solver.GetMisses();
+  this->Placed.resize(this->Solution.rows(), 3);
+  SMPFor(0, static_cast<int>(this->Placed.rows()), [&](int first, int last) {
+    for (int row = first; row < last; ++row)
+    {
+      // A target met is the boundary's edit exactly (the zone's frame would round it).
+      const bool met = this->Zone.Kinds[row] == PointKind::Targeted && misses[row] == 0.0;
+      if (met)
+      {
+        this->Placed.row(row) = this->Edited.row(row);
+      }
+      else
+      {
+        this->Placed.row(row) = this->Solution.row(row) + this->Center.transpose();
+      }
+    }
+  });
+}
+
 Vector3 VolumeFollower::Position(vtkIdType id) const
 {
   const int row = this->LocalOf[id];
-  if (row < 0)
-  {
-    return Point(this->Rest, id);
-  }
-  // A target met is the boundary's edit exactly (the zone's frame would round it).
-  const bool met = this->Zone.Kinds[row] == PointKind::Targeted && this->Solver.GetMisses()[row] == 0.0;
-  return met ? Vector3(this->Edited.row(row).transpose())
-             : Vector3(this->Solution.row(row).transpose() + this->Center);
+  return row < 0 ? Point(this->Rest, id) : Vector3(this->Placed.row(row).transpose());
 }
 
 void VolumeFollower::Write(vtkUnstructuredGrid* output, bool displacement)

@@ -95,6 +95,8 @@ public:
 
 private:
   std::string SelectZone(const std::vector<vtkIdType>& moved, const Settings& settings);
+  // The grid's frame positions of the zone's rows after a solve (Placed), and any point's.
+  void Place();
   Vector3 Position(vtkIdType id) const;
 
   VolumeMesh Mesh;
@@ -107,6 +109,7 @@ private:
   InjectiveDeformation Solver;
   Positions Solution; // zone rows, relative to Center
   Positions Edited;   // the targeted rows' edited positions, in the grid's frame
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Placed; // zone rows, grid's frame
   Vector3 Center = Vector3::Zero();
   std::vector<int> LocalOf; // grid id -> zone row, -1 outside
   double Reach = 0.0;

@@ -126,6 +126,26 @@ public:
     return smallest;
   }
 
+  /// Whether `test(id)` holds for a point of cell `cell`. Safe from many threads, unlike the
+  /// grid's cell access (which may copy into shared storage).
+  template <typename Test>
+  bool AnyPoint(vtkIdType cell, const Test& test) const
+  {
+    // Every point of a cell is a point of one of its corner tetrahedra.
+    const int begin = this->CellCorners[cell], end = begin + this->TrueCorners[cell];
+    for (int c = begin; c < end; ++c)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        if (test(this->Corners(c, k)))
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
   /// The grid of the last build.
   vtkUnstructuredGrid* GetGrid() const { return this->Grid; }
 

@@ -193,11 +193,13 @@ inline Edit FarEdit(vtkUnstructuredGrid* grid, double degrees, double lift)
 }
 
 /// What a volume edit is judged by, from VTK's vtkMeshQuality (Verdict's scaled Jacobian of
-/// tetrahedra and hexahedra): cells whose scaled Jacobian is not positive, and the smallest.
+/// tetrahedra and hexahedra): cells whose scaled Jacobian is not positive, and the smallest;
+/// and how far the grid's own ScaledJacobian cell array (the filter's) is from Verdict's.
 struct Validity
 {
   vtkIdType Inverted = 0;
   double SmallestScaledJacobian = std::numeric_limits<double>::infinity();
+  double LargestReportedQualityError = 0.0;
 };
 
 inline Validity Measure(vtkUnstructuredGrid* grid)
@@ -208,12 +210,18 @@ inline Validity Measure(vtkUnstructuredGrid* grid)
   quality->SetHexQualityMeasureToScaledJacobian();
   quality->Update();
   vtkDataArray* values = quality->GetOutput()->GetCellData()->GetArray("Quality");
+  vtkDataArray* reported = grid->GetCellData()->GetArray("ScaledJacobian");
   Validity validity;
   for (vtkIdType cell = 0; cell < grid->GetNumberOfCells(); ++cell)
   {
     const double q = values->GetTuple1(cell);
     validity.Inverted += !(q > 0.0);
     validity.SmallestScaledJacobian = std::min(validity.SmallestScaledJacobian, q);
+    if (reported)
+    {
+      validity.LargestReportedQualityError =
+        std::max(validity.LargestReportedQualityError, std::abs(reported->GetTuple1(cell) - q));
+    }
   }
   return validity;
 }
