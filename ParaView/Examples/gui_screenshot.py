@@ -4,17 +4,17 @@ as-rigid-as-possible mode, the handle widget in the render view, the Handle pane
 Run by scripts/gui-screenshot, which starts `paraview --script` on this file under Xvfb with
 LAPLACIAN_DATA (the shared meshes) and LAPLACIAN_SCREEN (the X screen dump to write) set. The
 script sets up the scene and returns, so that the GUI paints; a helper process dumps the screen
-with xwd a few seconds later and closes ParaView. An error, or an edit without a region, ends
-ParaView at once, with no dump."""
+with xwd a few seconds later and closes ParaView. An error (a failed import among them), or an
+edit without a region, ends ParaView at once, with no dump."""
 import os
 import subprocess
 import traceback
 
-from paraview.simple import (GetActiveViewOrCreate, LaplacianDeformation, OpenDataFile, Render,
-                             ResetCamera, SetActiveSource, Show)
-from paraview import servermanager
-
 try:
+    from paraview.simple import (GetActiveViewOrCreate, LaplacianDeformation, OpenDataFile,
+                                 Render, ResetCamera, SetActiveSource, Show)
+    from paraview import servermanager
+
     view = GetActiveViewOrCreate("RenderView")
     view.OrientationAxesVisibility = 0
     bunny = OpenDataFile(os.path.join(os.environ["LAPLACIAN_DATA"], "stanford-bunny.obj"))
