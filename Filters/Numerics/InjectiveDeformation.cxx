@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace LaplacianEditing
 {
@@ -180,7 +181,19 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
     return "The targets' pull must be positive.";
   }
   this->Rest = rest;
-  this->Tets = tetrahedra;
+  // The tetrahedra in the order of their first points, so that the loops over them gather and
+  // scatter points near the last ones: in a mesh generator's order, the gradient's scatter into
+  // points out of cache dominated the drag steps of large zones (Documentation/volumes.md).
+  std::vector<int> order(m);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+    [&](int a, int b) { return tetrahedra.row(a).minCoeff() < tetrahedra.row(b).minCoeff(); });
+  this->Tets.resize(m, 4);
+  for (int c = 0; c < m; ++c)
+  {
+    this->Tets.row(c) = tetrahedra.row(order[c]);
+  }
+  const Tetrahedra& tets = this->Tets;
   this->Kinds = kinds;
   this->FinalWeight = targetWeight;
   this->Backend = backend;
@@ -188,11 +201,11 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   this->Volume.resize(m);
   for (int c = 0; c < m; ++c)
   {
-    const Matrix3 edges = Edges(rest, tetrahedra, c);
+    const Matrix3 edges = Edges(rest, tets, c);
     const double determinant = edges.determinant();
     if (!(determinant > 0.0))
     {
-      return "A cell is flat or inverted at rest (corner tetrahedron " + std::to_string(c) + ").";
+      return "A cell is flat or inverted at rest (corner tetrahedron " + std::to_string(order[c]) + ").";
     }
     this->RestInverse[c] = edges.inverse();
     this->Volume[c] = determinant / 6.0;
@@ -223,7 +236,7 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
     {
       for (int j = 0; j < 4; ++j)
       {
-        const int ui = this->Unknown[tetrahedra(c, i)], uj = this->Unknown[tetrahedra(c, j)];
+        const int ui = this->Unknown[tets(c, i)], uj = this->Unknown[tets(c, j)];
         if (ui >= 0 && uj >= 0)
         {
           triplets.emplace_back(ui, uj, 1.0);
@@ -254,10 +267,10 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
     const Eigen::Matrix4d block = 8.0 * this->Volume[c] * gradients * gradients.transpose();
     for (int i = 0; i < 4; ++i)
     {
-      stiffness[tetrahedra(c, i)] += block(i, i);
+      stiffness[tets(c, i)] += block(i, i);
       for (int j = 0; j < 4; ++j)
       {
-        const int ui = this->Unknown[tetrahedra(c, i)], uj = this->Unknown[tetrahedra(c, j)];
+        const int ui = this->Unknown[tets(c, i)], uj = this->Unknown[tets(c, j)];
         this->Slots(c, 4 * i + j) = ui >= 0 && uj >= 0 ? slot(ui, uj) : -1;
         this->Blocks(c, 4 * i + j) = block(i, j);
       }
@@ -280,7 +293,7 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   {
     for (int i = 0; i < 4; ++i)
     {
-      ++this->TetOffsets[tetrahedra(c, i) + 1];
+      ++this->TetOffsets[tets(c, i) + 1];
     }
   }
   for (int p = 0; p < n; ++p)
@@ -293,7 +306,7 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   {
     for (int i = 0; i < 4; ++i)
     {
-      this->PointTets[fill[tetrahedra(c, i)]++] = c;
+      this->PointTets[fill[tets(c, i)]++] = c;
     }
   }
   this->Factor = SparseCholesky();
@@ -359,7 +372,8 @@ double InjectiveDeformation::Energy(
 {
   const Rows x = points;
   const int m = static_cast<int>(this->Tets.rows());
-  std::vector<double> energies(m);
+  std::vector<double>& energies = this->TetEnergies;
+  energies.resize(m);
   loop(0, m, [&](int first, int last) {
     for (int c = first; c < last; ++c)
     {
@@ -412,8 +426,11 @@ double InjectiveDeformation::Gradient(const Positions& points, const Positions& 
 {
   const Rows x = points;
   const int m = static_cast<int>(this->Tets.rows());
-  Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor> local(m, 12);
-  std::vector<double> energies(m);
+  // Kept between calls: allocated anew, a large zone's buffers cost their page faults again.
+  auto& local = this->CornerGradients;
+  local.resize(m, 12);
+  std::vector<double>& energies = this->TetEnergies;
+  energies.resize(m);
   loop(0, m, [&](int first, int last) {
     for (int c = first; c < last; ++c)
     {

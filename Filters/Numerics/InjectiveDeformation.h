@@ -144,6 +144,9 @@ private:
   double TotalVolume = 0.0;
   SparseCholesky Factor;
   std::vector<double> Misses;
+  // The per-tetrahedron buffers of Gradient and Energy.
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor> CornerGradients;
+  mutable std::vector<double> TetEnergies;
 };
 }
 
