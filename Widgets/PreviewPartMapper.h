@@ -3,21 +3,20 @@
 // (vtkLaplacianSurfaceMapper), for the same reason.
 //
 // VTK 9.1 and 9.2 rebuild a mapper's index buffers whenever its input's points move:
-// vtkOpenGLPolyDataMapper::BuildIBO compares a state that BuildBufferObjects has already
-// filled, with the input's MTime among it, as it does not clear it first. On the bunny's ARAP
-// drag in the ParaView GUI that was 5.4 ms of an 84 ms frame, for buffers the points do not
-// change. This mapper keys them on what they are made of: the cells, the representation, the
-// edge flags, the edge and vertex visibility, and the points only where a polygon has more than
-// three (those are triangulated on their positions). During a hardware selection it leaves the
-// decision to VTK, whose selection passes change the buffers. A surface of triangles shown
-// without edges or vertices (a preview's usual part) has its connectivity for index buffer:
-// uploaded whole, where VTK appends it a cell at a time (570 ms for the still part of a
-// 2M-point sphere, the first frame of its drag in ParaView).
+// vtkOpenGLPolyDataMapper::BuildIBO compares a state that BuildBufferObjects has already filled,
+// with the input's MTime among it, as it does not clear it first: buffers the points do not change,
+// rebuilt every drag frame. This mapper keys them on what they are made of: the cells, the
+// representation, the edge flags, the edge and vertex visibility, and the points only where a
+// polygon has more than three (those are triangulated on their positions). During a hardware
+// selection it leaves the decision to VTK, whose selection passes change the buffers. A surface of
+// triangles shown without edges or vertices (a preview's usual part) has its connectivity for index
+// buffer: uploaded whole, where VTK appends it a cell at a time (what each saves: performance.md,
+// "Frames per second during a drag").
 //
-// Its bounds are its points' ranges: VTK's are its cells' (so that unused points do not count),
-// a pass over every cell each frame, 2.9 ms of the same frame, and a part's points are all its
-// cells'. The ranges are those vtkDataArray caches, which the vertex buffer's shift and scale
-// then read instead of computing them again.
+// Its bounds are its points' ranges: VTK's are its cells' (so that unused points do not count), a
+// pass over every cell each frame, and a part's points are all its cells'. The ranges are those
+// vtkDataArray caches, which the vertex buffer's shift and scale then read instead of computing
+// them again.
 #ifndef LaplacianEditing_Widgets_PreviewPartMapper_h
 #define LaplacianEditing_Widgets_PreviewPartMapper_h
 

@@ -491,9 +491,9 @@ void vtkDeformationHandleRepresentation::BuildRepresentation()
     return;
   }
   // The shapes sit at the origin (their sources' default centre) and their actors at the
-  // centre, so that a drag moves the actors and rebuilds (and uploads) nothing: rebuilt at
-  // every move, the four tubes and two spheres cost 1.5 ms of a ParaView drag frame, and as much
-  // again to upload. The axis of a constrained move is drawn where it is, in world coordinates.
+  // centre, so that a drag moves the actors and rebuilds (and uploads) nothing: the four tubes
+  // and two spheres would be rebuilt and uploaded at every move otherwise. The axis of a
+  // constrained move is drawn where it is, in world coordinates.
   double center[3], view[3];
   this->GetCurrentCenter(center);
   for (vtkActor* actor : this->Actors())

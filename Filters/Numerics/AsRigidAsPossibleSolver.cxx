@@ -84,7 +84,7 @@ public:
       return false;
     }
     // The mixing weights minimize |f - dF theta|: with at most History columns, through the
-    // small Gram matrix (a QR of the tall dF took 20-35 ms at 30k vertices, this < 1 ms); a
+    // small Gram matrix (a QR of the tall dF costs tens of times more: performance.md); a
     // rank-revealing solve keeps nearly dependent differences harmless.
     const int stored = this->Stored;
     std::vector<Eigen::MatrixXd> grams(blocks);
@@ -867,7 +867,7 @@ void AsRigidAsPossibleSolver::UpdatePrior(
   }
   // The spline is linear in the displacements: a few points moved (a drag's) move the prior by
   // their cardinal functions. Each costs what a refit costs, once: a drag's later frames then
-  // cost O(vertices) (one point dragged among 1,000 on 37k vertices: 0.14 s a frame saved).
+  // cost O(vertices) instead of a refit's O(landmarks^3).
   constexpr std::size_t RememberedCardinals = 4;
   if (moved.empty() || moved.size() > RememberedCardinals)
   {

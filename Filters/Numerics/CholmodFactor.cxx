@@ -29,9 +29,9 @@ namespace
 // CHOLMOD 3 (SuiteSparse 5) runs the loops of its supernodal factorization that copy, zero and
 // scatter a supernode on a fixed team of 4 OpenMP threads (CHOLMOD_OMP_NUM_THREADS, a
 // compile-time constant), one team per supernode, beside BLAS's own threads. On surface meshes
-// the supernodes are small, so the teams cost more in wake-ups than the loops gain: on 2 cores,
-// bunny 30k, ARAP's factorization 0.12 -> 0.07 s and the implicit 3n x 3n one 1.9 -> 1.0 s with
-// these loops on the calling thread. During a factorization the calling thread's OpenMP regions
+// the supernodes are small, so the teams cost more in wake-ups than the loops gain (about half of
+// a factorization's time: Documentation/performance.md, "Measured choices"). During a
+// factorization the calling thread's OpenMP regions
 // are therefore inactive (its max-active-levels ICV is 0); BLAS keeps its threads.
 class SerialOpenMPLoops
 {

@@ -200,9 +200,8 @@ std::string SparseCholesky::Factorize(const SparseMatrix& matrix, SolverBackend 
 {
   // AMD orders fast; on large systems METIS's slower analysis pays back in factorization time
   // and memory. CHOLMOD's own default tries METIS far earlier, which costs more than it saves
-  // on editing regions (bunny, 28.9k, second order: 0.69 s against 0.38 s with AMD). A block
-  // system costs blockSize^3 times the flops for the same graph, so METIS pays back at once
-  // (bunny, 30k, implicit: 25.5 -> 15.0 GFlop).
+  // on editing regions. A block system costs blockSize^3 times the flops for the same graph, so
+  // METIS pays back at once (Documentation/performance.md, "Measured choices").
   if (ordering == FillOrdering::Automatic)
   {
     ordering = matrix.rows() < 300000 && blockSize == 1 ? FillOrdering::AMD : FillOrdering::METIS;

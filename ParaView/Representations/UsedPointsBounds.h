@@ -4,11 +4,12 @@
 // ParaView's representation and its mapper take a surface's bounds from its cells
 // (vtkPolyData::GetCellsBounds, so that unused points do not count): a pass over every cell
 // whenever a point moved, cached on each data object. After an edit moved points, and kept the
-// cells, the representation's geometry and the piece delivered to its mapper each made that
-// pass: 0.9 s of the 2.0 s release of a drag on a 2M-point sphere. Here the pass is made once
-// per set of cells, to learn whether every point belongs to a cell. Where one does, the cells'
-// bounds are the points' bounds (an edit's output keeps them as cached ranges, CachedRangePoints),
-// and Fill puts them in the data object's own cache, where VTK's pass would have put them.
+// cells, the representation's geometry and the piece delivered to its mapper each made that pass,
+// most of a drag's release on a 2M-point surface (performance.md, "Frames per second during a
+// drag"). Here the pass is made once per set of cells, to learn whether every point belongs to a
+// cell. Where one does, the cells' bounds are the points' bounds (an edit's output keeps them as
+// cached ranges, CachedRangePoints), and Fill puts them in the data object's own cache, where VTK's
+// pass would have put them.
 #ifndef LaplacianEditing_Representations_UsedPointsBounds_h
 #define LaplacianEditing_Representations_UsedPointsBounds_h
 

@@ -192,8 +192,7 @@ void PreviewParts::Write(const OutputEdit& edit)
 {
   vtkPoints* points = this->Moving->GetPoints();
   // The points' ranges as they are written, cached on their array: the mapper's bounds read
-  // them, a pass over the part every frame otherwise (1.5 ms of the bunny's ARAP frame in
-  // ParaView).
+  // them, a pass over the part every frame otherwise.
   std::array<double, 6> extremes = this->StillPointsExtremes;
   for (std::size_t k = 0; k < this->RowOfPoint.size(); ++k)
   {

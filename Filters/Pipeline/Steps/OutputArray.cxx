@@ -30,8 +30,7 @@ namespace
 // one or a written value: known from the written tuples alone. Where it lies among them (a
 // handle on the surface's extreme), it is the extreme of the tuples left alone or a written
 // value: those tuples' extremes are measured once for the set of tuples that change, one pass
-// kept for every later write of the same region (2M points: 0.6 s of ParaView's data
-// information at each release of a drag, before).
+// kept for every later write of the same region (performance.md, "Measured choices").
 class CachedRanges
 {
 public:
@@ -184,8 +183,7 @@ private:
 
   // The extremes in each family, (min, max) pairs, of the tuples `ids`; none give
   // (+inf, -inf). A drag writes the same hundreds of thousands of tuples at every step, so the
-  // pass runs in parallel on the array's own value type (610k points: 11 ms a pass through
-  // virtual GetTuple before).
+  // pass runs in parallel on the array's own value type, not through virtual GetTuple.
   static std::array<Extremes, Families> Measure(vtkDataArray* array, const std::vector<vtkIdType>& ids)
   {
     const int components = array->GetNumberOfComponents();
@@ -396,7 +394,7 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   }
   // The tuples that change, sorted: the last update's, back to rest, and this one's. A fresh
   // copy holds the rest's values, and its ranges are those the rest has cached. The moves of a
-  // drag write the same tuples, sorted once (a sort of the bunny's 30k region was 1.7 ms a move).
+  // drag write the same tuples, sorted once rather than at every move.
   const bool sameTuples = derived && buffer.Written == ids;
   std::vector<vtkIdType> merged;
   if (!sameTuples)

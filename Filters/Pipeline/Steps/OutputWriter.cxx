@@ -91,8 +91,8 @@ void OutputWriter::Write(
   const std::uint64_t key = ++this->Writes;
   const std::vector<vtkIdType>& moved = edit ? edit->Moved->Ids : none;
   output->SetPoints(this->Points.Update(rest->GetPoints(), moved, key, [&](vtkDataArray* points) {
-    // On the array's own value type: a virtual SetTuple per point was 9 ms of a 610k region's
-    // drag step.
+    // On the array's own value type: a virtual SetTuple per point costs a large region's drag
+    // step more than its solve's back-substitution (performance.md, "Measured choices").
     auto write = [&](auto* typed) {
       auto tuples = vtk::DataArrayTupleRange<3>(typed);
       vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {

@@ -2,9 +2,9 @@
 // backend would start threads at every loop.
 //
 // VTK before 9.3 runs vtkSMPTools::For on its STDThread backend (ParaView 5.11's only threaded
-// one) by starting and joining a thread per core at each call; a drag step of the bunny's
-// 30k-vertex ARAP edit makes about six such calls, and in the ParaView GUI its median went from
-// 22–24 ms to 17–19 ms on these threads (Documentation/performance.md). The calling thread works
+// one) by starting and joining a thread per core at each call, and a drag step makes about six
+// such calls (what that costs a ParaView drag frame: Documentation/performance.md, "Frames per
+// second during a drag"). The calling thread works
 // too; a call made while the pool is busy (from inside a loop body, or from another thread) runs
 // on its caller alone, as VTK runs a nested loop. Bodies must not throw (on a worker, as on
 // VTK's STDThread threads, an exception ends the process).

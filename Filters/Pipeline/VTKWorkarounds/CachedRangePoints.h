@@ -3,9 +3,9 @@
 // vtkPoints::ComputeBounds passes over the whole array whenever the points changed, even where
 // the array still caches its ranges (VTK 9.1, 9.2: vtkDataArray::ComputeScalarRange). OutputArray
 // keeps those ranges through the writes of a region, so on the points of an edit's output the
-// bounds ParaView's data information asks for after each update cost nothing (on a 2M-point
-// sphere, 84 ms of the release of each drag before). Where no range is cached, the first
-// GetBounds computes and caches them all, for whoever asks for the ranges next.
+// bounds ParaView's data information asks for after each update cost nothing, not a pass over
+// every point (performance.md, "Frames per second during a drag"). Where no range is cached,
+// the first GetBounds computes and caches them all, for whoever asks for the ranges next.
 #ifndef LaplacianEditing_Pipeline_CachedRangePoints_h
 #define LaplacianEditing_Pipeline_CachedRangePoints_h
 
