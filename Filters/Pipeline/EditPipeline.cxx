@@ -219,11 +219,21 @@ bool EditPipeline::Solve(EditSource& source)
   return true;
 }
 
+bool EditPipeline::Resolve(EditSource& source, const SolverSettings& settings)
+{
+  if (!this->Solved)
+  {
+    return this->Check("No edit to solve again: a Resolve follows an update that solved.");
+  }
+  this->Solved = this->UpdateRotationModel(settings) && this->Solve(source);
+  return this->Solved;
+}
+
 bool EditPipeline::SolveDragStep(EditSource& source, SolverSettings settings)
 {
   settings.Dragging = true;
   settings.Settle = this->Settle;
-  if (!this->UpdateRotationModel(settings) || !this->Solve(source))
+  if (!this->Resolve(source, settings))
   {
     return false;
   }

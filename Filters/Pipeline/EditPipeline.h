@@ -72,9 +72,15 @@ public:
   bool Run(vtkPolyData* rest, vtkPolyData* output, EditSource& source,
     const SolverSettings& settings, bool merge, const OutputOptions& options = {});
 
-  /// Solves the last Run's edit again for the motions `source` gives now, as one step of a drag
-  /// (settings.DragARAPIterations), on the same region and factors: nothing is rebuilt. Returns
-  /// false, with the error reported, when the solve fails.
+  /// Solves the last solved Run's edit again for the motions and point targets `source` gives
+  /// now, on the same surface, region and factors: nothing is checked against the input or
+  /// rebuilt, and no drag is recorded. A loop that only moves its targets (a fit's closest points)
+  /// runs this, then Write once. `settings` may change the rotation model's iterations and
+  /// tolerance, not what its factors hold. Returns false, with the error reported, when no Run has
+  /// solved or the solve fails.
+  bool Resolve(EditSource& source, const SolverSettings& settings);
+
+  /// Resolve as one step of a drag (settings.DragARAPIterations), which the drag's end settles.
   bool SolveDragStep(EditSource& source, SolverSettings settings);
 
   /// Writes `edit` (null: nothing moved) into `output`, a shallow copy of `rest`, in place in the

@@ -709,6 +709,50 @@ TEST(EditPipeline, RunsASourcesEditAndReportsThroughItsFilter)
   EXPECT_EQ(code, vtkErrorCode::UserError);
 }
 
+TEST(EditPipeline, ResolvesNewMotionsOnTheSameFactorsAndRecordsNoDrag)
+{
+  const int n = 8;
+  auto grid = Grid(n);
+  auto labels = GridLabels(grid, n);
+  vtkNew<vtkPolyDataAlgorithm> filter;
+  lep::EditPipeline pipeline(filter, [](unsigned long) {});
+  LabelledSource source;
+  source.Labels = labels;
+  ErrorCatcher errors(filter, vtkCommand::ErrorEvent);
+  EXPECT_FALSE(pipeline.Resolve(source, lep::SolverSettings())) << "nothing solved yet";
+  EXPECT_NE(errors.Messages.find("No edit to solve again"), std::string::npos);
+
+  source.Translation[2] = 0.5;
+  pipeline.BeginUpdate();
+  ASSERT_TRUE(pipeline.Run(grid, nullptr, source, lep::SolverSettings(), true));
+  source.Translation[2] = 0.2;
+  source.Translation[0] = 0.1;
+  ASSERT_TRUE(pipeline.Resolve(source, lep::SolverSettings()));
+  EXPECT_EQ(pipeline.GetEditor().GetNumberOfFactorizations(), 1);
+  EXPECT_EQ(source.RegionsSelected, 1);
+  EXPECT_TRUE(pipeline.SetDragging(false)) << "a Resolve is no drag step the drag's end settles";
+
+  // The same edit as a fresh pipeline solves it from the start.
+  vtkNew<vtkPolyData> resolved, fresh;
+  resolved->ShallowCopy(grid);
+  const lep::OutputEdit edit = pipeline.GetEdit();
+  pipeline.Write(grid, resolved, &edit, lep::OutputOptions{ true });
+  lep::EditPipeline reference(filter, [](unsigned long) {});
+  LabelledSource again;
+  again.Labels = labels;
+  std::copy(source.Translation, source.Translation + 3, again.Translation);
+  fresh->ShallowCopy(grid);
+  reference.BeginUpdate();
+  ASSERT_TRUE(reference.Run(grid, fresh, again, lep::SolverSettings(), true, lep::OutputOptions{ true }));
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_NEAR(resolved->GetPoint(p)[k], fresh->GetPoint(p)[k], 1e-12) << "point " << p;
+    }
+  }
+}
+
 namespace
 {
 // How many times each index of [0, n) a loop's ranges reached, and whether one was out of it.
