@@ -185,6 +185,12 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
     settings.Iterations = this->VolumeIterations;
     settings.DragIterations = this->DragVolumeIterations;
     settings.Dragging = surface->GetDragging() != 0;
+    // The settle reports its iterations and ends where the filter is aborted (a new grab, say):
+    // the output is then that iterate, every cell positive, and the next release settles.
+    settings.Progress = [this](double done) {
+      this->UpdateProgress(0.4 + 0.5 * done);
+      return !this->GetAbortExecute();
+    };
     // The volume is solved on one process: a surface solved by MUMPS has its volume by CHOLMOD.
     settings.Backend = surface->GetSolver() == vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT
       ? LaplacianEditing::SolverBackend::SimplicialLDLT

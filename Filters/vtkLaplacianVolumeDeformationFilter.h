@@ -22,7 +22,9 @@
  *
  * Interaction: the handle widget pairs with GetSurfaceFilter(). While Dragging is on, each update
  * runs DragVolumeIterations from the last result on the factors of the region; the update after
- * the drag iterates to convergence (at most VolumeIterations).
+ * the drag iterates to convergence (at most VolumeIterations), with a progress event after each
+ * iteration. An abort (AbortExecuteOn, from a progress observer when a new grab starts) ends it
+ * at that iterate, every cell still positive; the next release settles in full.
  *
  * @sa vtkLaplacianDeformationFilter vtkDeformationHandleWidget
  */

@@ -607,7 +607,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   double energy = still ? 0.0 : Infinity;
   // A continuation that ends with targets unmet runs once more from where it ended: the stall
   // that left them is rarely met twice.
-  for (int round = 0; round < Rounds && !still; ++round)
+  for (int round = 0; round < Rounds && !still && !report.Stopped; ++round)
   {
     if (round > 0 && (snap <= 0.0 || this->LargestMiss(points, targets) <= snap))
     {
@@ -615,7 +615,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
     }
     for (double weight : weights)
     {
-      if (report.Iterations >= options.MaximumIterations)
+      if (report.Iterations >= options.MaximumIterations || report.Stopped)
       {
         break;
       }
@@ -662,6 +662,12 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
         }
         const double decrease = energy - trialEnergy;
         energy = trialEnergy;
+        if (options.Progress &&
+          !options.Progress(static_cast<double>(report.Iterations) / options.MaximumIterations))
+        {
+          report.Stopped = true;
+          break;
+        }
         const double tolerance = weight < this->FinalWeight ? StageTolerance : options.Tolerance;
         if (decrease <= tolerance * energy)
         {

@@ -25,6 +25,7 @@
 #include "SparseCholesky.h"
 #include "Types.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,9 @@ struct InjectiveOptions
   /// Where a step stalls at a flattening cell, weight the proxy by the energy's curvature there
   /// and factor it again (false: a drag step, which must not pay a factorization).
   bool Reweight = true;
+  /// Called after each iteration with the share of MaximumIterations done; returning false
+  /// stops the solve at that iterate, which inverts no tetrahedron the start did not.
+  std::function<bool(double)> Progress;
 };
 
 struct InjectiveReport
@@ -67,6 +71,8 @@ struct InjectiveReport
   int Inverted = 0;
   /// Why the solve stopped early (a factorization refused), empty otherwise.
   std::string Error;
+  /// Whether Progress stopped the solve.
+  bool Stopped = false;
 };
 
 class InjectiveDeformation

@@ -7,7 +7,9 @@
 #include "vtkLaplacianLandmarkWarp.h"
 #include "vtkLaplacianVolumeDeformationFilter.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -20,9 +22,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -318,6 +322,56 @@ TEST(VolumeDeformation, DragReusesTheZoneAndTheReleaseSettles)
   filter->Update();
   EXPECT_GT(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
   EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+}
+
+TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseSettles)
+{
+  // The beam dragged and released with an observer that aborts after the settle's third
+  // iteration. Required: progress events in (0.4, 0.9), increasing, one an iteration; the abort
+  // ends the settle there with every cell positive; a new grab and release settle in full.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  const double lift[3] = { 0.0, 0.0, 0.3 };
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -5.0, lift));
+  filter->Update();
+  filter->DraggingOn();
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -30.0, lift));
+  filter->Update();
+  filter->DraggingOff();
+
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&progress);
+  observer->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
+    auto& seen = *static_cast<std::vector<double>*>(client);
+    const double done = *static_cast<double*>(data);
+    if (done > 0.4 && done < 0.9)
+    {
+      seen.push_back(done);
+      if (seen.size() == 3)
+      {
+        static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+      }
+    }
+  });
+  const unsigned long tag = filter->AddObserver(vtkCommand::ProgressEvent, observer);
+  filter->Update();
+  filter->RemoveObserver(tag);
+  filter->AbortExecuteOff();
+  ASSERT_EQ(progress.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_EQ(filter->GetNumberOfVolumeIterations(), 3);
+  const VolumeMeshes::Validity stopped = VolumeMeshes::Measure(filter->GetOutput());
+  EXPECT_EQ(stopped.Inverted, 0);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), beam->GetNumberOfPoints());
+
+  filter->DraggingOn(); // a new grab, then its release
+  filter->Update();
+  filter->DraggingOff();
+  filter->Update();
+  EXPECT_GT(filter->GetNumberOfVolumeIterations(), 3);
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
 }
 
 TEST(VolumeDeformation, UnreachableBoundaryIsReportedNotInverted)

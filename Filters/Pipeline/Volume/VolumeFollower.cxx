@@ -175,6 +175,10 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   options.MaximumIterations = settings.Dragging ? settings.DragIterations : settings.Iterations;
   options.Continuation = !settings.Dragging; // a drag step starts near its targets
   options.Reweight = !settings.Dragging;
+  if (!settings.Dragging)
+  {
+    options.Progress = settings.Progress;
+  }
   for (;;)
   {
     const int n = static_cast<int>(this->Zone.Points.size());
@@ -199,7 +203,9 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     }
     this->LastFacts.Iterations += report.Iterations;
     this->LastFacts.LargestMiss = report.LargestMiss;
-    if (report.LargestMiss <= this->Snap || settings.Dragging || this->Zone.Complete)
+    this->LastFacts.Stopped = report.Stopped;
+    if (report.LargestMiss <= this->Snap || settings.Dragging || report.Stopped ||
+      this->Zone.Complete)
     {
       break;
     }
@@ -223,7 +229,8 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   }
   this->LastFacts.ZonePoints = static_cast<int>(this->Zone.Points.size());
   this->LastFacts.ZoneTetrahedra = static_cast<int>(this->Zone.Tets.rows());
-  this->LastEdited = edited;
+  // A stopped settle did not follow the edit: a commit settles it first.
+  this->LastEdited = this->LastFacts.Stopped ? nullptr : edited;
   this->LastEditedTime = edited->GetMTime();
   // Each cell's quality, and the failures: cells around a point left short of its target, and
   // any cell Verdict would see folded that no corner tetrahedron shows (a hexahedron's centre).
@@ -260,7 +267,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
 
 std::string VolumeFollower::FailureWarning() const
 {
-  if (this->LastFacts.FailedCells == 0)
+  if (this->LastFacts.FailedCells == 0 || this->LastFacts.Stopped)
   {
     return {};
   }

@@ -26,6 +26,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ public:
     int DragIterations = 1;
     bool Dragging = false;
     SolverBackend Backend = SolverBackend::Cholmod;
+    /// A settle's progress after each iteration (share of Iterations); returning false stops it
+    /// there, every cell still positive (InjectiveOptions::Progress). Unused by drag steps.
+    std::function<bool(double)> Progress;
   };
 
   /// What the last Follow did.
@@ -59,6 +63,8 @@ public:
     /// Times the zone grew to meet its targets.
     int Growths = 0;
     int FailedCells = 0;
+    /// Whether Settings::Progress stopped the settle short.
+    bool Stopped = false;
     double LargestMiss = 0.0;
     double SetupTime = 0.0;
     double SolveTime = 0.0;
@@ -78,7 +84,7 @@ public:
     const Settings& settings);
   /// Nothing moved: the next Write writes the rest.
   void Reset();
-  /// Whether the last Follow followed `edited` as it is now.
+  /// Whether the last Follow followed `edited` as it is now (a stopped settle did not).
   bool Follows(vtkPoints* edited) const
   {
     return this->Followed && edited == this->LastEdited && edited->GetMTime() == this->LastEditedTime;
