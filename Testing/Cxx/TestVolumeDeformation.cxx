@@ -24,8 +24,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -322,6 +324,46 @@ TEST(VolumeDeformation, DragReusesTheZoneAndTheReleaseSettles)
   filter->Update();
   EXPECT_GT(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
   EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+}
+
+TEST(VolumeDeformation, ADragStepsWorkFollowsTheRegionNotTheMesh)
+{
+  // The same edit of a beam's end on a beam of 40 cells and on one of 160, as fine, four times
+  // as long: a drag step solves the same zone and moves the same number of points on both.
+  auto dragStep = [](int cells) {
+    vtkSmartPointer<vtkUnstructuredGrid> beam = VolumeMeshes::HexBeam(cells, 5, 5, 0.2 * cells);
+    vtkNew<Filter> filter;
+    filter->SetInputData(beam);
+    filter->SetHandleCenter(0.2 * cells, 0.5, 0.5);
+    filter->SetHandleRadius(0.31); // radii between grid distances: no ties
+    filter->SetROIRadius(3.05);
+    filter->SetRotationModeToAsRigidAsPossible();
+    const double lift[3] = { 0.0, 0.0, 0.2 };
+    filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -5.0, lift));
+    filter->Update();
+    filter->DraggingOn();
+    filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -10.0, lift));
+    filter->Update();
+    vtkIdType moved = 0;
+    for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+    {
+      double rest[3], now[3];
+      beam->GetPoint(i, rest);
+      filter->GetOutput()->GetPoint(i, now);
+      moved += Distance(rest, now) > 0.0;
+    }
+    EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+    return std::make_tuple(filter->GetNumberOfZonePoints(), moved, beam->GetNumberOfPoints());
+  };
+  const auto [shortZone, shortMoved, shortPoints] = dragStep(40);
+  const auto [longZone, longMoved, longPoints] = dragStep(160);
+  std::printf("zone points %d and %d, points moved %lld and %lld, of %lld and %lld\n", shortZone,
+    longZone, static_cast<long long>(shortMoved), static_cast<long long>(longMoved),
+    static_cast<long long>(shortPoints), static_cast<long long>(longPoints));
+  EXPECT_GT(shortMoved, 0);
+  EXPECT_EQ(longZone, shortZone);
+  EXPECT_EQ(longMoved, shortMoved);
+  EXPECT_LT(longZone, longPoints / 3);
 }
 
 TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseSettles)
