@@ -25,6 +25,7 @@
 // --compare-cgal (when built with CGAL) measures, on the same welded mesh and the same
 // selection (the filter's ROI and handle vertices), our setup and moves in every mode against
 // CGAL's Surface_mesh_deformation with SRE-ARAP: preprocess(), deform(1) and deform(5) per move.
+#include "BenchmarkMeasures.h"
 #include "EditMeasures.h"
 #include "MeshReader.h"
 #include "SurfaceMesh.h"
@@ -48,8 +49,6 @@
 #include <CGAL/Surface_mesh_deformation.h>
 #endif
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -70,18 +69,8 @@ double SecondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-double Median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double PeakMemoryMegabytes()
-{
-  rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
+using BenchmarkMeasures::Median;
+using BenchmarkMeasures::PeakMemoryMegabytes;
 
 // The BLAS library mapped into this process: CHOLMOD's supernodes run on it.
 std::string LoadedBlas()

@@ -9,14 +9,18 @@
 //
 // The edit (one per mesh, NAME:DEGREES): the handle on the boundary point farthest from the
 // centroid, radius --handle and region --roi of the diagonal, as-rigid-as-possible; it turns by
-// DEGREES about the axis across the line from the centroid, about the handle, and moves --lift
-// of the diagonal the way it turns. Every method gets the same boundary motion, the surface
-// filter's. Inverted cells and the smallest scaled Jacobian are vtkMeshQuality's (Verdict). The
-// filter's settled update reports its zone, iterations and seconds; then --drags steps of a drag
-// to the same pose (Dragging on, factors reused): the median seconds a step of the volume
-// filter, and of the surface filter alone on the boundary surface, and the largest distance of a boundary point from its
-// edited position in any step (--drag-iterations sets the filter's DragVolumeIterations). --write saves the rest and
-// edited meshes as .vtu for a look in ParaView; --meshes-only makes the meshes and stops.
+// DEGREES about the axis across the line from the centroid, about the handle, and moves --lift of
+// the diagonal the way it turns. Every method gets the same boundary motion, the surface filter's.
+// Inverted cells and the smallest scaled Jacobian are vtkMeshQuality's (Verdict). The filter's
+// settled update reports its zone, iterations and seconds; then --drags steps of a drag to the same
+// pose (Dragging on, factors reused): the median seconds a step of the volume filter, and of the
+// surface filter alone on the boundary surface, and the largest distance of a boundary point from
+// its edited position in any step, and the drag's lag: the largest distance of a point at the
+// drag's end from the settled volume of its release (both as shares of the diagonal;
+// --drag-iterations sets the filter's DragVolumeIterations), and the process's peak memory (of the
+// whole run, every method's). --write saves the rest and edited meshes as .vtu for a look in
+// ParaView; --meshes-only makes the meshes and stops.
+#include "BenchmarkMeasures.h"
 #include "VolumeMeshes.h"
 
 #include "SparseCholesky.h"
@@ -26,6 +30,7 @@
 #include "vtkLaplacianVolumeDeformationFilter.h"
 
 #include "vtkGeometryFilter.h"
+#include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkXMLUnstructuredGridWriter.h"
@@ -35,6 +40,7 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -170,15 +176,7 @@ void Report(const std::string& mesh, const std::string& method, vtkUnstructuredG
   std::fflush(stdout);
 }
 
-double Median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
+using BenchmarkMeasures::Median;
 
 void Run(const std::string& name, double degrees, const Options& options)
 {
@@ -282,6 +280,7 @@ void Run(const std::string& name, double degrees, const Options& options)
     std::vector<double> volumeSteps, surfaceSteps;
     int iterations = 0;
     double dragMiss = 0.0;
+    double dragLag = 0.0; // the drag's end from the release's settled volume, largest
     for (vtkLaplacianDeformationFilter* surfaceFilter : { dragged->GetSurfaceFilter(), alone.Get() })
     {
       const bool isVolume = surfaceFilter != alone.Get();
@@ -297,8 +296,17 @@ void Run(const std::string& name, double degrees, const Options& options)
         iterations += isVolume ? dragged->GetNumberOfVolumeIterations() : 0;
         dragMiss = std::max(dragMiss, isVolume ? dragged->GetLargestTargetMiss() : 0.0);
       }
+      vtkNew<vtkPoints> dragEnd;
+      dragEnd->DeepCopy(isVolume ? dragged->GetOutput()->GetPoints() : boundary->GetPoints());
       surfaceFilter->DraggingOff();
       filter->Update();
+      for (vtkIdType i = 0; isVolume && i < dragEnd->GetNumberOfPoints(); ++i)
+      {
+        double there[3], settled[3];
+        dragEnd->GetPoint(i, there);
+        dragged->GetOutput()->GetPoint(i, settled);
+        dragLag = std::max(dragLag, std::sqrt(vtkMath::Distance2BetweenPoints(there, settled)));
+      }
     }
     std::ostringstream dragFacts;
     dragFacts << ", \"volume_step\": " << Median(volumeSteps)
@@ -306,7 +314,9 @@ void Run(const std::string& name, double degrees, const Options& options)
               << ", \"volume_iterations_per_step\": "
               << static_cast<double>(iterations) / options.Drags
               << ", \"largest_drag_miss\": " << dragMiss / rest->GetLength()
-              << ", \"surface_points\": " << boundary->GetNumberOfPoints();
+              << ", \"drag_lag\": " << dragLag / rest->GetLength()
+              << ", \"surface_points\": " << boundary->GetNumberOfPoints()
+              << ", \"peak_memory_mb\": " << BenchmarkMeasures::PeakMemoryMegabytes();
     Report(what.str(), "filter_dragged", dragged->GetOutput(), dragFacts.str());
   }
 }
