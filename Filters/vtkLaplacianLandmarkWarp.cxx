@@ -269,17 +269,12 @@ bool vtkLaplacianLandmarkWarp::FollowBoundary(vtkPolyData* warpedBoundary, vtkUn
   lep::VolumeFollower::Settings settings;
   settings.Dragging = this->Dragging != 0;
   settings.Backend = static_cast<le::SolverBackend>(this->Solver);
-  if (!pipeline.Check(volume.Follow(edit.Moved->Ids, warpedBoundary->GetPoints(), edit.RegionVersion, settings)))
+  if (!pipeline.Check(volume.FollowEdit(&edit, warpedBoundary->GetPoints(), settings, output,
+        this->OutputDisplacement != 0, 0.9, 1.0)))
   {
     output->ShallowCopy(this->GetInputDataObject(0, 0));
     return false;
   }
-  const std::string warning = volume.FailureWarning();
-  if (!warning.empty() && !settings.Dragging)
-  {
-    vtkWarningMacro(<< warning);
-  }
-  volume.Write(output, this->OutputDisplacement != 0);
   return true;
 }
 

@@ -174,42 +174,24 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
 
   // The interior follows the points the boundary's edit moved.
   const lep::EditPipeline& pipeline = surface->GetEditPipeline();
-  if (!pipeline.HasSolved())
+  const bool solved = pipeline.HasSolved();
+  const lep::OutputEdit edit = solved ? pipeline.GetEdit() : lep::OutputEdit();
+  lep::VolumeFollower::Settings settings;
+  settings.Iterations = this->VolumeIterations;
+  settings.DragIterations = this->DragVolumeIterations;
+  settings.Dragging = surface->GetDragging() != 0;
+  // The volume is solved on one process: a surface solved by MUMPS has its volume by CHOLMOD.
+  settings.Backend = surface->GetSolver() == vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT
+    ? LaplacianEditing::SolverBackend::SimplicialLDLT
+    : LaplacianEditing::SolverBackend::Cholmod;
+  // An abort (a new grab, say) ends the settle at a valid iterate; the next release settles.
+  error = internals.Follower.FollowEdit(solved ? &edit : nullptr,
+    surface->GetOutput()->GetPoints(), settings, output, this->OutputDisplacement != 0, 0.4, 0.9);
+  if (!error.empty())
   {
-    internals.Follower.Reset();
+    vtkErrorMacro(<< error);
+    return false;
   }
-  else
-  {
-    const lep::OutputEdit edit = pipeline.GetEdit();
-    lep::VolumeFollower::Settings settings;
-    settings.Iterations = this->VolumeIterations;
-    settings.DragIterations = this->DragVolumeIterations;
-    settings.Dragging = surface->GetDragging() != 0;
-    // The settle reports its iterations and ends where the filter is aborted (a new grab, say):
-    // the output is then that iterate, every cell positive, and the next release settles.
-    settings.Progress = [this](double done) {
-      this->UpdateProgress(0.4 + 0.5 * done);
-      return !this->GetAbortExecute();
-    };
-    // The volume is solved on one process: a surface solved by MUMPS has its volume by CHOLMOD.
-    settings.Backend = surface->GetSolver() == vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT
-      ? LaplacianEditing::SolverBackend::SimplicialLDLT
-      : LaplacianEditing::SolverBackend::Cholmod;
-    error = internals.Follower.Follow(
-      edit.Moved->Ids, surface->GetOutput()->GetPoints(), edit.RegionVersion, settings);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< error);
-      return false;
-    }
-    const std::string warning = internals.Follower.FailureWarning();
-    if (!warning.empty() && !settings.Dragging)
-    {
-      vtkWarningMacro(<< warning);
-    }
-  }
-  this->UpdateProgress(0.9);
-  internals.Follower.Write(output, this->OutputDisplacement != 0);
   return true;
 }
 

@@ -615,7 +615,18 @@ TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
   warp->SetInputData(beam);
   warp->SetSourceLandmarks(sources);
   warp->SetTargetLandmarks(targets);
+  // The interior's settle reports its iterations as the volume filter's does (VolumeFollower),
+  // after the surface's edit has reported its end.
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&progress);
+  observer->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(data));
+  });
+  warp->AddObserver(vtkCommand::ProgressEvent, observer);
   warp->Update();
+  const auto surfaceDone = std::find(progress.begin(), progress.end(), 1.0);
+  EXPECT_GT(std::count_if(surfaceDone, progress.end(), [](double done) { return done > 0.9 && done < 1.0; }), 1);
   auto* output = vtkUnstructuredGrid::SafeDownCast(warp->GetOutput());
   ASSERT_NE(output, nullptr);
   EXPECT_LT(warp->GetMaximumLandmarkDistance(), 1e-6 * beam->GetLength());

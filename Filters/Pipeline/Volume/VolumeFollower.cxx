@@ -4,6 +4,7 @@
 #include "SMPFor.h"
 #include "Stopwatch.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -39,6 +40,7 @@ Vector3 Point(vtkPoints* points, vtkIdType id)
 
 void VolumeFollower::SetFilter(vtkAlgorithm* filter)
 {
+  this->Filter = filter;
   const OutputArray::Holders holders = OutputWriter::PipelineHolders(filter);
   for (OutputArray* array : { &this->Points, &this->Quality, &this->Failures })
   {
@@ -82,6 +84,36 @@ std::string VolumeFollower::Update(vtkUnstructuredGrid* input, vtkPoints* rest)
       this->RestQuality->SetValue(cell, static_cast<float>(this->Mesh.Quality(cell, position)));
     }
   });
+  return {};
+}
+
+std::string VolumeFollower::FollowEdit(const OutputEdit* edit, vtkPoints* edited,
+  Settings settings, vtkUnstructuredGrid* output, bool displacement, double from, double to)
+{
+  if (!edit)
+  {
+    this->Reset();
+  }
+  else
+  {
+    vtkAlgorithm* filter = this->Filter;
+    settings.Progress = [filter, from, to](double done) {
+      filter->UpdateProgress(from + (to - from) * done);
+      return !filter->GetAbortExecute();
+    };
+    const std::string error = this->Follow(edit->Moved->Ids, edited, edit->RegionVersion, settings);
+    if (!error.empty())
+    {
+      return error;
+    }
+    const std::string warning = this->FailureWarning();
+    if (!warning.empty() && !settings.Dragging)
+    {
+      vtkWarningWithObjectMacro(filter, << warning);
+    }
+  }
+  this->Filter->UpdateProgress(to);
+  this->Write(output, displacement);
   return {};
 }
 

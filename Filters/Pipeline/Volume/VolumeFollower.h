@@ -17,6 +17,7 @@
 #define LaplacianEditing_Pipeline_VolumeFollower_h
 
 #include "DisplacementArray.h"
+#include "EditTypes.h"
 #include "InjectiveDeformation.h"
 #include "OutputArray.h"
 #include "VolumeMesh.h"
@@ -70,7 +71,8 @@ public:
     double SolveTime = 0.0;
   };
 
-  /// The filter whose output is written (see OutputArray::SetPipelineHolders).
+  /// The filter whose output is written (see OutputArray::SetPipelineHolders), and which
+  /// FollowEdit reports through.
   void SetFilter(vtkAlgorithm* filter);
 
   /// Brings the mesh up to date with `input` (VolumeMesh::Update), the edits starting from the
@@ -82,6 +84,13 @@ public:
   /// `edited`; `region` changes whenever `moved` does. Returns an error, empty on success.
   std::string Follow(const std::vector<vtkIdType>& moved, vtkPoints* edited, std::uint64_t region,
     const Settings& settings);
+  /// What every filter with a volume does with its boundary's edit, `edit` with the moved points'
+  /// coordinates in `edited` (null edit: nothing moved): Follow it, the settle's progress
+  /// reported as the filter's from `from` to `to` and ended by its abort flag
+  /// (Settings::Progress), a settled update's unmet targets warned, and the result written into
+  /// `output` (Write). Returns an error, empty on success; on an error nothing is written.
+  std::string FollowEdit(const OutputEdit* edit, vtkPoints* edited, Settings settings,
+    vtkUnstructuredGrid* output, bool displacement, double from, double to);
   /// Nothing moved: the next Write writes the rest.
   void Reset();
   /// Whether the last Follow followed `edited` as it is now (a stopped settle did not).
@@ -105,6 +114,7 @@ private:
   void Place();
   Vector3 Position(vtkIdType id) const;
 
+  vtkAlgorithm* Filter = nullptr;
   VolumeMesh Mesh;
   const vtkPoints* LastEdited = nullptr; // compared, never dereferenced
   vtkMTimeType LastEditedTime = 0;
