@@ -30,6 +30,7 @@ struct vtkLaplacianVolumeDeformationFilter::vtkInternals
   lep::RestShape Rest;
   lep::VolumeFollower Follower;
   vtkNew<vtkCallbackCommand> CommitObserver;
+  vtkNew<vtkCallbackCommand> ProgressObserver; // the boundary's edit, during this filter's
   vtkMTimeType ArrayTime = 0; // of the array selection last handed to the surface filter
 };
 
@@ -52,6 +53,17 @@ vtkLaplacianVolumeDeformationFilter::vtkLaplacianVolumeDeformationFilter()
     else
     {
       filter->SurfaceCommitUndone();
+    }
+  });
+  // The boundary's edit reports as this filter's second step, and this filter's abort ends it.
+  vtkCallbackCommand* progress = this->Internals->ProgressObserver;
+  progress->SetClientData(this);
+  progress->SetCallback([](vtkObject* caller, unsigned long, void* self, void* data) {
+    auto* filter = static_cast<vtkLaplacianVolumeDeformationFilter*>(self);
+    filter->UpdateProgress(0.1 + 0.3 * *static_cast<double*>(data));
+    if (filter->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
     }
   });
   auto surface = vtkSmartPointer<vtkLaplacianDeformationFilter>::New();
@@ -163,7 +175,10 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
   {
     internals.Follower.GetMesh().SetBoundaryLabels(this->GetInputArrayToProcess(0, input));
   }
+  const unsigned long forward = surface->AddObserver(vtkCommand::ProgressEvent, internals.ProgressObserver);
   surface->Update();
+  surface->RemoveObserver(forward);
+  surface->AbortExecuteOff();
   if (surface->GetErrorCode() != vtkErrorCode::NoError)
   {
     vtkErrorMacro(<< "The edit of the boundary surface failed (the surface filter's error above "

@@ -22,9 +22,10 @@
  *
  * Interaction: the handle widget pairs with GetSurfaceFilter(). While Dragging is on, each update
  * runs DragVolumeIterations from the last result on the factors of the region; the update after
- * the drag iterates to convergence (at most VolumeIterations), with a progress event after each
- * iteration. An abort (AbortExecuteOn, from a progress observer when a new grab starts) ends it
- * at that iterate, every cell still positive; the next release settles in full.
+ * the drag iterates to convergence (at most VolumeIterations). Progress: the boundary's edit in
+ * (0.1, 0.4), its settle's iterations last; the interior's iterations in (0.4, 0.9). An abort
+ * (AbortExecuteOn, from a progress observer when a new grab starts) ends either settle at that
+ * iterate, every cell still positive; the next release settles in full.
  *
  * @sa vtkLaplacianDeformationFilter vtkDeformationHandleWidget
  */

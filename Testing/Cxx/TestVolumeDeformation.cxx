@@ -370,7 +370,8 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
 {
   // The beam dragged and released with an observer that aborts after the settle's third
   // iteration. Required: progress events in (0.4, 0.9), increasing, one an iteration; the abort
-  // ends the settle there with every cell positive; a new grab and release settle in full.
+  // ends the settle there with every cell positive; a new grab and release settle in full. The
+  // boundary's own settle reports first, in (0.1, 0.4).
   vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
   vtkSmartPointer<Filter> filter = BeamEdit(beam);
   const double lift[3] = { 0.0, 0.0, 0.3 };
@@ -381,16 +382,23 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
   filter->Update();
   filter->DraggingOff();
 
-  std::vector<double> progress;
+  struct Progress
+  {
+    std::vector<double> Boundary, Volume;
+  } progress;
   vtkNew<vtkCallbackCommand> observer;
   observer->SetClientData(&progress);
   observer->SetCallback([](vtkObject* caller, unsigned long, void* client, void* data) {
-    auto& seen = *static_cast<std::vector<double>*>(client);
+    auto& seen = *static_cast<Progress*>(client);
     const double done = *static_cast<double*>(data);
+    if (done > 0.1 && done < 0.4)
+    {
+      seen.Boundary.push_back(done);
+    }
     if (done > 0.4 && done < 0.9)
     {
-      seen.push_back(done);
-      if (seen.size() == 3)
+      seen.Volume.push_back(done);
+      if (seen.Volume.size() == 3)
       {
         static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
       }
@@ -400,8 +408,9 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
   filter->Update();
   filter->RemoveObserver(tag);
   filter->AbortExecuteOff();
-  ASSERT_EQ(progress.size(), 3u);
-  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_GT(progress.Boundary.size(), 1u) << "the boundary's settle reports as the filter's";
+  ASSERT_EQ(progress.Volume.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(progress.Volume.begin(), progress.Volume.end()));
   EXPECT_EQ(filter->GetNumberOfVolumeIterations(), 3);
   const VolumeMeshes::Validity stopped = VolumeMeshes::Measure(filter->GetOutput());
   EXPECT_EQ(stopped.Inverted, 0);
@@ -412,6 +421,44 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
   filter->DraggingOff();
   filter->Update();
   EXPECT_GT(filter->GetNumberOfVolumeIterations(), 3);
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+}
+
+TEST(VolumeDeformation, AnAbortDuringTheBoundarysSettleEndsTheUpdateAtAValidVolume)
+{
+  // Aborted at the boundary's first settle event (its edit's last tenth, (0.37, 0.4) of the
+  // filter's progress): the boundary's settle ends there, the volume's after its first iteration, every cell positive; the surface filter is free for the next
+  // update, and a new grab and release settle in full.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  const double lift[3] = { 0.0, 0.0, 0.3 };
+  filter->DraggingOn();
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -30.0, lift));
+  filter->Update();
+  filter->DraggingOff();
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetCallback([](vtkObject* caller, unsigned long, void*, void* data) {
+    const double done = *static_cast<double*>(data);
+    if (done > 0.37 && done < 0.4)
+    {
+      static_cast<vtkAlgorithm*>(caller)->AbortExecuteOn();
+    }
+  });
+  const unsigned long tag = filter->AddObserver(vtkCommand::ProgressEvent, observer);
+  filter->Update();
+  filter->RemoveObserver(tag);
+  filter->AbortExecuteOff();
+  EXPECT_EQ(filter->GetSurfaceFilter()->GetAbortExecute(), 0);
+  EXPECT_EQ(filter->GetSurfaceFilter()->GetNumberOfARAPIterations(), 1);
+  EXPECT_EQ(filter->GetNumberOfVolumeIterations(), 1);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+
+  filter->DraggingOn();
+  filter->Update();
+  filter->DraggingOff();
+  filter->Update();
+  EXPECT_GT(filter->GetSurfaceFilter()->GetNumberOfARAPIterations(), 1);
   EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
   EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
 }
