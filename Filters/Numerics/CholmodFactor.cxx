@@ -31,8 +31,8 @@ namespace
 // compile-time constant), one team per supernode, beside BLAS's own threads. On surface meshes
 // the supernodes are small, so the teams cost more in wake-ups than the loops gain (about half of
 // a factorization's time: Documentation/performance.md, "Measured choices"). During a
-// factorization the calling thread's OpenMP regions
-// are therefore inactive (its max-active-levels ICV is 0); BLAS keeps its threads.
+// factorization the calling thread's OpenMP regions are therefore inactive (its
+// max-active-levels ICV is 0); BLAS keeps its threads.
 class SerialOpenMPLoops
 {
 public:
