@@ -297,11 +297,14 @@ void Run(const std::string& name, double degrees, const Options& options)
         iterations += isVolume ? dragged->GetNumberOfVolumeIterations() : 0;
         dragMiss = std::max(dragMiss, isVolume ? dragged->GetLargestTargetMiss() : 0.0);
       }
-      vtkNew<vtkPoints> dragEnd;
-      dragEnd->DeepCopy(isVolume ? dragged->GetOutput()->GetPoints() : boundary->GetPoints());
+      vtkNew<vtkPoints> dragEnd; // the volume's points at the drag's end
+      if (isVolume)
+      {
+        dragEnd->DeepCopy(dragged->GetOutput()->GetPoints());
+      }
       surfaceFilter->DraggingOff();
       filter->Update();
-      for (vtkIdType i = 0; isVolume && i < dragEnd->GetNumberOfPoints(); ++i)
+      for (vtkIdType i = 0; i < dragEnd->GetNumberOfPoints(); ++i)
       {
         double there[3], settled[3];
         dragEnd->GetPoint(i, there);

@@ -90,6 +90,27 @@ bool SamePoint(vtkPoints* a, vtkPoints* b, vtkIdType id)
   return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
 }
 
+// The beam's edit dragged to a 30-degree turn and released: its next update settles.
+vtkSmartPointer<Filter> ReleasedBeamDrag(vtkUnstructuredGrid* beam)
+{
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  const double lift[3] = { 0.0, 0.0, 0.3 };
+  filter->DraggingOn();
+  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -30.0, lift));
+  filter->Update();
+  filter->DraggingOff();
+  return filter;
+}
+
+// A new grab and its release: the release settles in full.
+void GrabAndRelease(Filter* filter)
+{
+  filter->DraggingOn();
+  filter->Update();
+  filter->DraggingOff();
+  filter->Update();
+}
+
 double Distance(const double a[3], const double b[3])
 {
   return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
@@ -373,15 +394,7 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
   // ends the settle there with every cell positive; a new grab and release settle in full. The
   // boundary's own settle reports first, in (0.1, 0.4).
   vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
-  vtkSmartPointer<Filter> filter = BeamEdit(beam);
-  const double lift[3] = { 0.0, 0.0, 0.3 };
-  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -5.0, lift));
-  filter->Update();
-  filter->DraggingOn();
-  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -30.0, lift));
-  filter->Update();
-  filter->DraggingOff();
-
+  vtkSmartPointer<Filter> filter = ReleasedBeamDrag(beam);
   struct Progress
   {
     std::vector<double> Boundary, Volume;
@@ -416,10 +429,7 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
   EXPECT_EQ(stopped.Inverted, 0);
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), beam->GetNumberOfPoints());
 
-  filter->DraggingOn(); // a new grab, then its release
-  filter->Update();
-  filter->DraggingOff();
-  filter->Update();
+  GrabAndRelease(filter);
   EXPECT_GT(filter->GetNumberOfVolumeIterations(), 3);
   EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
   EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
@@ -431,12 +441,7 @@ TEST(VolumeDeformation, AnAbortDuringTheBoundarysSettleEndsTheUpdateAtAValidVolu
   // filter's progress): the boundary's settle ends there, the volume's after its first iteration, every cell positive; the surface filter is free for the next
   // update, and a new grab and release settle in full.
   vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
-  vtkSmartPointer<Filter> filter = BeamEdit(beam);
-  const double lift[3] = { 0.0, 0.0, 0.3 };
-  filter->DraggingOn();
-  filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -30.0, lift));
-  filter->Update();
-  filter->DraggingOff();
+  vtkSmartPointer<Filter> filter = ReleasedBeamDrag(beam);
   vtkNew<vtkCallbackCommand> observer;
   observer->SetCallback([](vtkObject* caller, unsigned long, void*, void* data) {
     const double done = *static_cast<double*>(data);
@@ -454,10 +459,7 @@ TEST(VolumeDeformation, AnAbortDuringTheBoundarysSettleEndsTheUpdateAtAValidVolu
   EXPECT_EQ(filter->GetNumberOfVolumeIterations(), 1);
   EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
 
-  filter->DraggingOn();
-  filter->Update();
-  filter->DraggingOff();
-  filter->Update();
+  GrabAndRelease(filter);
   EXPECT_GT(filter->GetSurfaceFilter()->GetNumberOfARAPIterations(), 1);
   EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
   EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
