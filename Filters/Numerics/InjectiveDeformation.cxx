@@ -155,8 +155,9 @@ double InjectiveDeformation::TetrahedronScaledJacobian(
   // Every corner sees the same determinant (six times the volume), with its orientation, over
   // the product of its three edges' lengths: the smallest corner is the one of the longest
   // edges (of the shortest, if inverted).
-  const double ab = (b - a).norm(), ac = (c - a).norm(), ad = (d - a).norm();
-  const double bc = (c - b).norm(), bd = (d - b).norm(), cd = (d - c).norm();
+  // Squared, so that one square root is taken: the quality pass runs at every drag step.
+  const double ab = (b - a).squaredNorm(), ac = (c - a).squaredNorm(), ad = (d - a).squaredNorm();
+  const double bc = (c - b).squaredNorm(), bd = (d - b).squaredNorm(), cd = (d - c).squaredNorm();
   const double lengths[4] = { ab * ac * ad, ab * bc * bd, ac * bc * cd, ad * bd * cd };
   const auto [shortest, longest] = std::minmax_element(lengths, lengths + 4);
   if (*shortest <= 0.0)
@@ -164,7 +165,7 @@ double InjectiveDeformation::TetrahedronScaledJacobian(
     return 0.0;
   }
   const double determinant = (b - a).dot((c - a).cross(d - a));
-  return std::sqrt(2.0) * determinant / (determinant > 0.0 ? *longest : *shortest);
+  return std::sqrt(2.0) * determinant / std::sqrt(determinant > 0.0 ? *longest : *shortest);
 }
 
 std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedra& tetrahedra,
@@ -300,13 +301,13 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   {
     this->TetOffsets[p + 1] += this->TetOffsets[p];
   }
-  this->PointTets.resize(this->TetOffsets[n]);
+  this->PointCorners.resize(this->TetOffsets[n]);
   std::vector<int> fill(this->TetOffsets.begin(), this->TetOffsets.end() - 1);
   for (int c = 0; c < m; ++c)
   {
     for (int i = 0; i < 4; ++i)
     {
-      this->PointTets[fill[tets(c, i)]++] = c;
+      this->PointCorners[fill[tets(c, i)]++] = 4 * c + i;
     }
   }
   this->Factor = SparseCholesky();
@@ -452,27 +453,29 @@ double InjectiveDeformation::Gradient(const Positions& points, const Positions& 
       corners.col(0) = -dEdges.rowwise().sum();
     }
   });
-  gradient.setZero(this->Unknowns.size(), 3);
-  double energy = 0.0;
-  for (int c = 0; c < m; ++c)
-  {
-    energy += energies[c];
-    for (int i = 0; i < 4; ++i)
+  // Each unknown gathers its corners' gradients: no two threads write one row.
+  const int unknowns = static_cast<int>(this->Unknowns.size());
+  gradient.resize(unknowns, 3);
+  loop(0, unknowns, [&](int first, int last) {
+    for (int u = first; u < last; ++u)
     {
-      const int u = this->Unknown[this->Tets(c, i)];
-      if (u >= 0)
+      const int p = this->Unknowns[u];
+      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+      for (int k = this->TetOffsets[p]; k < this->TetOffsets[p + 1]; ++k)
       {
-        gradient.row(u) += local.block<1, 3>(c, 3 * i);
+        sum += Eigen::Map<const Eigen::RowVector3d>(local.data() + 3 * this->PointCorners[k]);
       }
+      if (this->Kinds[p] == PointKind::Targeted)
+      {
+        sum += 2.0 * this->Lambda * this->Pull[p] * (points.row(p) - targets.row(p));
+      }
+      gradient.row(u) = sum;
     }
-  }
-  for (std::size_t u = 0; u < this->Unknowns.size(); ++u)
+  });
+  double energy = 0.0;
+  for (double e : energies)
   {
-    const int p = this->Unknowns[u];
-    if (this->Kinds[p] == PointKind::Targeted)
-    {
-      gradient.row(u) += 2.0 * this->Lambda * this->Pull[p] * (points.row(p) - targets.row(p));
-    }
+    energy += e;
   }
   return energy + this->Penalty(points, targets);
 }
@@ -527,8 +530,11 @@ void InjectiveDeformation::Snap(const Positions& targets, Positions& x, double s
       continue;
     }
     x.row(p) = targets.row(p);
-    around.assign(this->PointTets.begin() + this->TetOffsets[p],
-      this->PointTets.begin() + this->TetOffsets[p + 1]);
+    around.clear();
+    for (int k = this->TetOffsets[p]; k < this->TetOffsets[p + 1]; ++k)
+    {
+      around.push_back(this->PointCorners[k] / 4);
+    }
     if (!this->AllPositive(x, around))
     {
       x.row(p) = before;

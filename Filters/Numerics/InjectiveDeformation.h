@@ -142,7 +142,8 @@ private:
   Eigen::Matrix<double, Eigen::Dynamic, 16, Eigen::RowMajor> Blocks;
   std::vector<int> PullSlots;
   std::vector<double> TetWeights;
-  std::vector<int> TetOffsets, PointTets; // tetrahedra around each point
+  // The corners at each point p, from TetOffsets[p] on: 4 c + i for corner i of tetrahedron c.
+  std::vector<int> TetOffsets, PointCorners;
   double Lambda = 0.0;        // the pull's weight in the stage being solved
   double FinalWeight = 0.0;   // Prepare's
   double FactoredWeight = 0.0;

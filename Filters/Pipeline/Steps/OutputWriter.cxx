@@ -91,31 +91,15 @@ void OutputWriter::Write(
   const std::uint64_t key = ++this->Writes;
   const std::vector<vtkIdType>& moved = edit ? edit->Moved->Ids : none;
   output->SetPoints(this->Points.Update(rest->GetPoints(), moved, key, [&](vtkDataArray* points) {
-    // On the array's own value type: a virtual SetTuple per point costs a large region's drag
-    // step more than its solve's back-substitution (performance.md, "Measured choices").
-    auto write = [&](auto* typed) {
-      auto tuples = vtk::DataArrayTupleRange<3>(typed);
-      vtkSMPTools::For(0, static_cast<vtkIdType>(moved.size()), [&](vtkIdType begin, vtkIdType end) {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          le::Vector3 p =
-            edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
-          if (!edit->Moved->Offsets.empty())
-          {
-            p += edit->Moved->Offsets[i];
-          }
-          auto tuple = tuples[moved[i]];
-          for (int c = 0; c < 3; ++c)
-          {
-            tuple[c] = p[c];
-          }
-        }
-      });
-    };
-    if (!vtkArrayDispatch::Dispatch::Execute(points, write))
-    {
-      write(points);
-    }
+    OutputArray::SetTuples<3>(points, moved, [&](vtkIdType i, double* p) {
+      le::Vector3 position =
+        edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
+      if (!edit->Moved->Offsets.empty())
+      {
+        position += edit->Moved->Offsets[i];
+      }
+      std::copy(position.data(), position.data() + 3, p);
+    });
   }));
   const NormalRefresher* normals = edit ? edit->Normals : nullptr;
   if (vtkDataArray* pointNormals = RestNormals(rest->GetPointData()))

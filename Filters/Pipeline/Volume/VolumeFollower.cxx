@@ -276,7 +276,8 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     return row >= 0 && misses[row] > this->Snap;
   };
   const bool anyMissed = this->LastFacts.LargestMiss > this->Snap;
-  std::vector<char> failed(cells.size());
+  std::vector<char>& failed = this->Failed;
+  failed.resize(cells.size());
   SMPFor(0, static_cast<int>(cells.size()), [&](int first, int last) {
     for (int k = first; k < last; ++k)
     {
@@ -284,15 +285,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
       failed[k] = this->ZoneQuality[k] <= 0.0 || (anyMissed && this->Mesh.AnyPoint(cells[k], missed));
     }
   });
-  this->FailedCells.clear();
-  for (std::size_t k = 0; k < cells.size(); ++k)
-  {
-    if (failed[k])
-    {
-      this->FailedCells.push_back(cells[k]);
-    }
-  }
-  this->LastFacts.FailedCells = static_cast<int>(this->FailedCells.size());
+  this->LastFacts.FailedCells = static_cast<int>(std::count(failed.begin(), failed.end(), 1));
   this->Followed = true;
   return {};
 }
@@ -343,28 +336,20 @@ void VolumeFollower::Write(vtkUnstructuredGrid* output, bool displacement)
   const std::vector<vtkIdType>& moved = this->Followed ? this->Movable : none;
   const std::vector<vtkIdType>& cells = this->Followed ? this->Zone.Cells : none;
   output->SetPoints(this->Points.Update(this->Rest, moved, key, [&](vtkDataArray* points) {
-    for (vtkIdType id : moved)
-    {
-      points->SetTuple(id, this->Position(id).data());
-    }
+    OutputArray::SetTuples<3>(points, moved, [&](vtkIdType i, double* p) {
+      const Vector3 position = this->Position(moved[i]);
+      std::copy(position.data(), position.data() + 3, p);
+    });
   }));
   vtkDataArray* quality =
     this->Quality.Update(this->RestQuality, cells, key, [&](vtkDataArray* array) {
-      for (std::size_t k = 0; k < cells.size(); ++k)
-      {
-        array->SetComponent(cells[k], 0, this->ZoneQuality[k]);
-      }
+      OutputArray::SetTuples<1>(
+        array, cells, [&](vtkIdType k, double* q) { *q = this->ZoneQuality[k]; });
     });
   vtkDataArray* failures =
     this->Failures.Update(this->NoFailures, cells, key, [&](vtkDataArray* array) {
-      for (vtkIdType cell : cells)
-      {
-        array->SetComponent(cell, 0, 0.0);
-      }
-      for (vtkIdType cell : this->FailedCells)
-      {
-        array->SetComponent(cell, 0, 1.0);
-      }
+      OutputArray::SetTuples<1>(
+        array, cells, [&](vtkIdType k, double* failed) { *failed = this->Failed[k]; });
     });
   output->GetCellData()->AddArray(quality);
   output->GetCellData()->AddArray(failures);

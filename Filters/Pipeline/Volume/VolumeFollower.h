@@ -132,8 +132,9 @@ private:
   double Snap = 0.0;
   std::uint64_t Region = 0;
   bool Followed = false;
-  std::vector<vtkIdType> Movable, FailedCells;
+  std::vector<vtkIdType> Movable;
   std::vector<double> ZoneQuality; // of the zone's cells
+  std::vector<char> Failed;         // of the zone's cells: 1 on a failed one (EditFailed)
   std::uint64_t Writes = 0;
   OutputArray Points;
   OutputArray Quality;
