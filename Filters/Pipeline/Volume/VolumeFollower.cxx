@@ -281,6 +281,22 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   SMPFor(0, static_cast<int>(cells.size()), [&](int first, int last) {
     for (int k = first; k < last; ++k)
     {
+      // A tetrahedron from the zone's own rows: this pass runs at every drag step, and the
+      // grid's lookups cost it more than the arithmetic.
+      const int t = this->Zone.CellTets[k];
+      if (t >= 0)
+      {
+        const auto row = [&](int i) -> Vector3 { return this->Placed.row(this->Zone.Tets(t, i)); };
+        this->ZoneQuality[k] =
+          InjectiveDeformation::TetrahedronScaledJacobian(row(0), row(1), row(2), row(3));
+        bool leftShort = false;
+        for (int i = 0; i < 4 && anyMissed; ++i)
+        {
+          leftShort = leftShort || misses[this->Zone.Tets(t, i)] > this->Snap;
+        }
+        failed[k] = this->ZoneQuality[k] <= 0.0 || leftShort;
+        continue;
+      }
       this->ZoneQuality[k] = this->Mesh.Quality(cells[k], position);
       failed[k] = this->ZoneQuality[k] <= 0.0 || (anyMissed && this->Mesh.AnyPoint(cells[k], missed));
     }

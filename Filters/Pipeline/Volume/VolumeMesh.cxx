@@ -541,6 +541,17 @@ void VolumeMesh::SelectZone(
   }
   std::sort(zone.Cells.begin(), zone.Cells.end());
   zone.Cells.erase(std::unique(zone.Cells.begin(), zone.Cells.end()), zone.Cells.end());
+  zone.CellTets.assign(zone.Cells.size(), -1);
+  for (std::size_t k = 0; k < zone.Cells.size(); ++k)
+  {
+    const vtkIdType cell = zone.Cells[k];
+    if (this->Kinds[cell] == CellKind::Tetrahedron)
+    {
+      // A tetrahedron is its own corner tetrahedron, among the sorted corners taken.
+      zone.CellTets[k] = static_cast<int>(
+        std::lower_bound(tets.begin(), tets.end(), this->CellCorners[cell]) - tets.begin());
+    }
+  }
 }
 }
 }

@@ -71,6 +71,8 @@ public:
     std::vector<PointKind> Kinds;
     Tetrahedra Tets;               // in zone point indices
     std::vector<vtkIdType> Cells;  // the grid cells whose corner tetrahedra these are
+    /// Per cell: its row of Tets if it is a tetrahedron (its quality is that row's), else -1.
+    std::vector<int> CellTets;
     /// Whether the zone holds every point the seeds connect to: it cannot grow.
     bool Complete = false;
   };
