@@ -411,6 +411,10 @@ int vtkLaplacianVolumeDeformationFilter::GetNumberOfVolumeIterations()
 {
   return this->Internals->Follower.GetFacts().Iterations;
 }
+int vtkLaplacianVolumeDeformationFilter::GetNumberOfVolumeFactorizations()
+{
+  return this->Internals->Follower.GetFacts().Factorizations;
+}
 int vtkLaplacianVolumeDeformationFilter::GetNumberOfZoneGrowths()
 {
   return this->Internals->Follower.GetFacts().Growths;

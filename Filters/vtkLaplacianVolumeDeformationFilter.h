@@ -162,8 +162,10 @@ public:
   /** Points and corner tetrahedra of the zone the interior moved in. */
   int GetNumberOfZonePoints();
   int GetNumberOfZoneTetrahedra();
-  /** Iterations the interior took, and how often the zone grew to meet its targets. */
+  /** Iterations the interior took, its proxy's factorizations (none in a drag step), and how
+   * often the zone grew to meet its targets. */
   int GetNumberOfVolumeIterations();
+  int GetNumberOfVolumeFactorizations();
   int GetNumberOfZoneGrowths();
   /** Cells marked in EditFailed. */
   int GetNumberOfFailedCells();

@@ -25,6 +25,8 @@ constexpr double FirstWeight = 1.0;
 constexpr double ContinuationRatio = 100.0;
 // Continuations at most in one solve.
 constexpr int Rounds = 2;
+// Targets missed by at most this many snap distances are near: a stiffer pull meets them.
+constexpr double NearMiss = 100.0;
 // The earlier stages only bring the points near: they stop at this relative decrease.
 constexpr double StageTolerance = 1e-3;
 // A step this short says the proxy has lost the energy's shape: it is reweighted.
@@ -604,20 +606,32 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   // whole zone turn and shear towards the targets before a stiff one puts the boundary on them,
   // where a stiff pull from the start drags the boundary ahead of the interior and the steps
   // stall at the first flattened cell.
-  std::vector<double> weights{ this->FinalWeight };
+  // A solve that may not factor (a drag step) pulls as stiffly as the factor it finds.
+  const bool keepFactor = !options.Reweight && this->FactoredWeight > 0.0;
+  std::vector<double> weights{ keepFactor ? this->FactoredWeight : this->FinalWeight };
   while (options.Continuation && weights.back() / ContinuationRatio >= FirstWeight)
   {
     weights.push_back(weights.back() / ContinuationRatio);
   }
   std::reverse(weights.begin(), weights.end());
   double energy = still ? 0.0 : Infinity;
-  // A continuation that ends with targets unmet runs once more from where it ended: the stall
-  // that left them is rarely met twice.
   for (int round = 0; round < Rounds && !still && !report.Stopped; ++round)
   {
-    if (round > 0 && (snap <= 0.0 || this->LargestMiss(points, targets) <= snap))
+    if (round > 0)
     {
-      break;
+      const double miss = this->LargestMiss(points, targets);
+      if (snap <= 0.0 || miss <= snap)
+      {
+        break;
+      }
+      // Without a continuation (a release from a drag's end), targets left a little short are
+      // where the pull balances the mesh, and the shortfall falls as the pull stiffens: one
+      // stiffer stage. Otherwise the stages run once more from where they ended: the stall that
+      // left the targets is rarely met twice (and from rest, this was measured faster).
+      if (!options.Continuation && miss <= NearMiss * snap)
+      {
+        weights = { weights.back() * ContinuationRatio };
+      }
     }
     for (double weight : weights)
     {
@@ -625,6 +639,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
       {
         break;
       }
+      report.Factorizations += weight != this->FactoredWeight;
       report.Error = this->FactorAt(weight);
       if (!report.Error.empty())
       {
@@ -659,6 +674,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
           // A cell about to flatten stopped the step: the proxy stiffens the cells as the
           // energy's curvature has, and is factored again.
           this->Reweight(points, loop);
+          ++report.Factorizations;
           report.Error = this->FactorAt(weight);
           if (!report.Error.empty())
           {

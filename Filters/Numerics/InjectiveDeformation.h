@@ -63,6 +63,9 @@ struct InjectiveOptions
 struct InjectiveReport
 {
   int Iterations = 0;
+  /// Factorizations of the proxy (continuation stages and reweighting; none while the weights
+  /// are those already factored, as in a drag step).
+  int Factorizations = 0;
   /// The symmetric Dirichlet part of the energy over the rest volume (0 at rest or rigid).
   double Distortion = 0.0;
   /// The largest distance of a targeted point from its target.

@@ -282,6 +282,8 @@ void Run(const std::string& name, double degrees, const Options& options)
     int iterations = 0;
     double dragMiss = 0.0;
     double dragLag = 0.0; // the drag's end from the release's settled volume, largest
+    double release = 0.0;  // the volume's release update, boundary and interior
+    int releaseIterations = 0;
     for (vtkLaplacianDeformationFilter* surfaceFilter : { dragged->GetSurfaceFilter(), alone.Get() })
     {
       const bool isVolume = surfaceFilter != alone.Get();
@@ -303,7 +305,13 @@ void Run(const std::string& name, double degrees, const Options& options)
         dragEnd->DeepCopy(dragged->GetOutput()->GetPoints());
       }
       surfaceFilter->DraggingOff();
+      const le::Stopwatch releaseWatch;
       filter->Update();
+      if (isVolume)
+      {
+        release = releaseWatch.Seconds();
+        releaseIterations = dragged->GetNumberOfVolumeIterations();
+      }
       for (vtkIdType i = 0; i < dragEnd->GetNumberOfPoints(); ++i)
       {
         double there[3], settled[3];
@@ -321,6 +329,7 @@ void Run(const std::string& name, double degrees, const Options& options)
               << static_cast<double>(iterations) / options.Drags
               << ", \"largest_drag_miss\": " << dragMiss / rest->GetLength()
               << ", \"drag_lag\": " << dragLag / rest->GetLength()
+              << ", \"release\": " << release << ", \"release_iterations\": " << releaseIterations
               << ", \"surface_points\": " << boundary->GetNumberOfPoints()
               << ", \"peak_memory_mb\": " << BenchmarkMeasures::PeakMemoryMegabytes();
     Report(what.str(), "filter_dragged", dragged->GetOutput(), dragFacts.str());

@@ -182,6 +182,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     this->Reset();
     return {};
   }
+  const bool fromDrag = this->Dragged && region == this->Region && !this->Zone.Points.empty();
   if (region != this->Region || this->Zone.Points.empty())
   {
     // The reach: the region's radius about its centroid, at rest.
@@ -205,7 +206,9 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   }
   InjectiveOptions options;
   options.MaximumIterations = settings.Dragging ? settings.DragIterations : settings.Iterations;
-  options.Continuation = !settings.Dragging; // a drag step starts near its targets
+  // A drag step, and a release, start near their targets (the release at the drag's end): the
+  // pull is as stiff as it will be from the start. Only a settle from rest loosens it first.
+  options.Continuation = !settings.Dragging && !fromDrag;
   options.Reweight = !settings.Dragging;
   if (!settings.Dragging)
   {
@@ -234,6 +237,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
       return "Cannot follow the edit into the volume: " + report.Error;
     }
     this->LastFacts.Iterations += report.Iterations;
+    this->LastFacts.Factorizations += report.Factorizations;
     this->LastFacts.LargestMiss = report.LargestMiss;
     this->LastFacts.Stopped = report.Stopped;
     if (report.LargestMiss <= this->Snap || settings.Dragging || report.Stopped ||
@@ -259,6 +263,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
         solved.row(static_cast<Eigen::Index>(row)) + (center - this->Center).transpose();
     }
   }
+  this->Dragged = settings.Dragging;
   this->LastFacts.ZonePoints = static_cast<int>(this->Zone.Points.size());
   this->LastFacts.ZoneTetrahedra = static_cast<int>(this->Zone.Tets.rows());
   // A stopped settle did not follow the edit: a commit settles it first.

@@ -61,6 +61,7 @@ public:
     int ZonePoints = 0;
     int ZoneTetrahedra = 0;
     int Iterations = 0;
+    int Factorizations = 0;
     /// Times the zone grew to meet its targets.
     int Growths = 0;
     int FailedCells = 0;
@@ -132,6 +133,7 @@ private:
   double Snap = 0.0;
   std::uint64_t Region = 0;
   bool Followed = false;
+  bool Dragged = false; // the zone holds a drag step's result
   std::vector<vtkIdType> Movable;
   std::vector<double> ZoneQuality; // of the zone's cells
   std::vector<char> Failed;         // of the zone's cells: 1 on a failed one (EditFailed)
