@@ -23,8 +23,6 @@ constexpr double Momentum = (1.0 - 0.1) / (1.0 + 0.1);
 // The continuation's first pull (as stiff as the mesh around a point) and its growth a stage.
 constexpr double FirstWeight = 1.0;
 constexpr double ContinuationRatio = 100.0;
-// Continuations at most in one solve.
-constexpr int Rounds = 2;
 // Targets missed by at most this many snap distances are near: a stiffer pull meets them.
 constexpr double NearMiss = 100.0;
 // The earlier stages only bring the points near: they stop at this relative decrease.
@@ -606,16 +604,30 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   // whole zone turn and shear towards the targets before a stiff one puts the boundary on them,
   // where a stiff pull from the start drags the boundary ahead of the interior and the steps
   // stall at the first flattened cell.
-  // A solve that may not factor (a drag step) pulls as stiffly as the factor it finds.
-  const bool keepFactor = !options.Reweight && this->FactoredWeight > 0.0;
-  std::vector<double> weights{ keepFactor ? this->FactoredWeight : this->FinalWeight };
-  while (options.Continuation && weights.back() / ContinuationRatio >= FirstWeight)
+  // The targets' pull in stages, loose to stiff: the continuation.
+  std::vector<double> stages{ this->FinalWeight };
+  while (stages.back() / ContinuationRatio >= FirstWeight)
   {
-    weights.push_back(weights.back() / ContinuationRatio);
+    stages.push_back(stages.back() / ContinuationRatio);
   }
-  std::reverse(weights.begin(), weights.end());
+  std::reverse(stages.begin(), stages.end());
+  // Without it, the final pull; a solve that may not factor (a drag step) pulls as stiffly as
+  // the factor it finds.
+  const bool keepFactor = !options.Reweight && this->FactoredWeight > 0.0;
+  std::vector<double> weights = options.Continuation
+    ? stages
+    : std::vector<double>{ keepFactor ? this->FactoredWeight : this->FinalWeight };
+  // Where targets are left short, the solve goes on from where it ended. Without a continuation
+  // (a release from a drag's end), targets a little short are first taken for where the pull
+  // balances the mesh, a shortfall that falls as the pull stiffens: one stiffer stage. Otherwise
+  // (a stall at a flattening cell) the stages run from a loose pull: the stall that left the
+  // targets is rarely met twice.
+  const int rounds = options.Continuation ? 2 : 3;
+  bool stiffened = false;
   double energy = still ? 0.0 : Infinity;
-  for (int round = 0; round < Rounds && !still && !report.Stopped; ++round)
+  for (int round = 0; round < rounds && report.Iterations < options.MaximumIterations && !still &&
+       !report.Stopped;
+       ++round)
   {
     if (round > 0)
     {
@@ -624,13 +636,14 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
       {
         break;
       }
-      // Without a continuation (a release from a drag's end), targets left a little short are
-      // where the pull balances the mesh, and the shortfall falls as the pull stiffens: one
-      // stiffer stage. Otherwise the stages run once more from where they ended: the stall that
-      // left the targets is rarely met twice (and from rest, this was measured faster).
-      if (!options.Continuation && miss <= NearMiss * snap)
+      const bool stiffen = !options.Continuation && !stiffened && miss <= NearMiss * snap;
+      weights = stiffen ? std::vector<double>{ weights.back() * ContinuationRatio } : stages;
+      stiffened = stiffened || stiffen;
+      if (!stiffen)
       {
-        weights = { weights.back() * ContinuationRatio };
+        // From a loose pull, from the rest stiffness, as any continuation starts.
+        std::fill(this->TetWeights.begin(), this->TetWeights.end(), 1.0);
+        this->FactoredWeight = 0.0;
       }
     }
     for (double weight : weights)

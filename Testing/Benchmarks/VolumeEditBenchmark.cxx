@@ -283,7 +283,7 @@ void Run(const std::string& name, double degrees, const Options& options)
     double dragMiss = 0.0;
     double dragLag = 0.0; // the drag's end from the release's settled volume, largest
     double release = 0.0;  // the volume's release update, boundary and interior
-    int releaseIterations = 0;
+    int releaseIterations = 0, releaseFactorizations = 0, releaseGrowths = 0;
     for (vtkLaplacianDeformationFilter* surfaceFilter : { dragged->GetSurfaceFilter(), alone.Get() })
     {
       const bool isVolume = surfaceFilter != alone.Get();
@@ -311,6 +311,8 @@ void Run(const std::string& name, double degrees, const Options& options)
       {
         release = releaseWatch.Seconds();
         releaseIterations = dragged->GetNumberOfVolumeIterations();
+        releaseFactorizations = dragged->GetNumberOfVolumeFactorizations();
+        releaseGrowths = dragged->GetNumberOfZoneGrowths();
       }
       for (vtkIdType i = 0; i < dragEnd->GetNumberOfPoints(); ++i)
       {
@@ -330,6 +332,8 @@ void Run(const std::string& name, double degrees, const Options& options)
               << ", \"largest_drag_miss\": " << dragMiss / rest->GetLength()
               << ", \"drag_lag\": " << dragLag / rest->GetLength()
               << ", \"release\": " << release << ", \"release_iterations\": " << releaseIterations
+              << ", \"release_factorizations\": " << releaseFactorizations
+              << ", \"release_growths\": " << releaseGrowths
               << ", \"surface_points\": " << boundary->GetNumberOfPoints()
               << ", \"peak_memory_mb\": " << BenchmarkMeasures::PeakMemoryMegabytes();
     Report(what.str(), "filter_dragged", dragged->GetOutput(), dragFacts.str());
