@@ -316,12 +316,13 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
   return {};
 }
 
-std::string InjectiveDeformation::FactorAt(double weight)
+std::string InjectiveDeformation::FactorAt(double weight, InjectiveReport& report)
 {
   if (weight == this->FactoredWeight)
   {
     return {};
   }
+  ++report.Factorizations;
   double* values = this->Proxy.valuePtr();
   std::fill(values, values + this->Proxy.nonZeros(), 0.0);
   for (Eigen::Index c = 0; c < this->Slots.rows(); ++c)
@@ -652,8 +653,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
       {
         break;
       }
-      report.Factorizations += weight != this->FactoredWeight;
-      report.Error = this->FactorAt(weight);
+      report.Error = this->FactorAt(weight, report);
       if (!report.Error.empty())
       {
         break;
@@ -687,8 +687,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
           // A cell about to flatten stopped the step: the proxy stiffens the cells as the
           // energy's curvature has, and is factored again.
           this->Reweight(points, loop);
-          ++report.Factorizations;
-          report.Error = this->FactorAt(weight);
+          report.Error = this->FactorAt(weight, report);
           if (!report.Error.empty())
           {
             break;

@@ -110,8 +110,9 @@ public:
 
 
 private:
-  // Factors the proxy with the targets' pull at `weight`, unless it is factored at it.
-  std::string FactorAt(double weight);
+  // Factors the proxy with the targets' pull at `weight`, unless it is factored at it (counted
+  // in `report`).
+  std::string FactorAt(double weight, InjectiveReport& report);
   // Weights each tetrahedron's block by the energy's curvature at `points`.
   void Reweight(const Positions& points, const ParallelFor& loop);
   double Energy(const Positions& points, const Positions& targets, const ParallelFor& loop) const;
