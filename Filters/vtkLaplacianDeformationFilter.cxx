@@ -4,7 +4,6 @@
 #include "HandleMotion.h"
 #include "HandleSource.h"
 #include "RestShape.h"
-#include "SparseCholesky.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
@@ -28,28 +27,8 @@ namespace lep = LaplacianEditing::Pipeline;
 
 vtkStandardNewMacro(vtkLaplacianDeformationFilter);
 
-// The filter's enums are the core's, value for value.
-static_assert(static_cast<int>(le::LaplacianWeights::Uniform) ==
-    vtkLaplacianDeformationFilter::WEIGHTS_UNIFORM &&
-  static_cast<int>(le::LaplacianWeights::Cotangent) ==
-    vtkLaplacianDeformationFilter::WEIGHTS_COTANGENT);
-static_assert(static_cast<int>(le::RotationMode::None) ==
-    vtkLaplacianDeformationFilter::ROTATION_NONE &&
-  static_cast<int>(le::RotationMode::Explicit) == vtkLaplacianDeformationFilter::ROTATION_EXPLICIT &&
-  static_cast<int>(le::RotationMode::Implicit) == vtkLaplacianDeformationFilter::ROTATION_IMPLICIT &&
-  static_cast<int>(le::RotationMode::AsRigidAsPossible) ==
-    vtkLaplacianDeformationFilter::ROTATION_AS_RIGID_AS_POSSIBLE);
-static_assert(static_cast<int>(le::SolverBackend::Cholmod) ==
-    vtkLaplacianDeformationFilter::SOLVER_CHOLMOD &&
-  static_cast<int>(le::SolverBackend::SimplicialLDLT) ==
-    vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT &&
-  static_cast<int>(le::SolverBackend::Distributed) == vtkLaplacianDeformationFilter::SOLVER_MUMPS);
-static_assert(static_cast<int>(le::FillOrdering::Automatic) ==
-    vtkLaplacianDeformationFilter::ORDERING_AUTOMATIC &&
-  static_cast<int>(le::FillOrdering::AMD) == vtkLaplacianDeformationFilter::ORDERING_AMD &&
-  static_cast<int>(le::FillOrdering::METIS) == vtkLaplacianDeformationFilter::ORDERING_METIS &&
-  static_cast<int>(le::FillOrdering::NestedDissection) ==
-    vtkLaplacianDeformationFilter::ORDERING_NESTED_DISSECTION);
+// The filter's own enums are the core's, value for value (the shared ones:
+// vtkLaplacianEditFilter.cxx).
 static_assert(static_cast<int>(le::DistanceMethod::FastMarching) ==
     vtkLaplacianDeformationFilter::DISTANCE_FAST_MARCHING &&
   static_cast<int>(le::DistanceMethod::EdgePaths) ==
@@ -73,13 +52,13 @@ struct vtkLaplacianDeformationFilter::vtkInternals
 {
   explicit vtkInternals(vtkLaplacianDeformationFilter* filter)
     : Source(filter)
-    , Pipeline(filter, [filter](unsigned long code) { filter->SetErrorCode(code); })
+    , Pipeline(filter->GetEditPipeline())
   {
   }
 
   lep::RestShape Rest;
   lep::HandleSource Source;
-  lep::EditPipeline Pipeline;
+  lep::EditPipeline& Pipeline; // vtkLaplacianEditFilter's
   double Diagonal = 0.0; // of the rest surface's bounding box
   // When the last update solved an edit (a preview needs one of the current properties).
   vtkTimeStamp EditTime;
@@ -91,10 +70,6 @@ struct vtkLaplacianDeformationFilter::vtkInternals
 vtkLaplacianDeformationFilter::vtkLaplacianDeformationFilter()
   : Internals(new vtkInternals(this))
 {
-  if (!IsCholmodAvailable())
-  {
-    this->Solver = SOLVER_SIMPLICIAL_LDLT;
-  }
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
   this->SetNumberOfInputPorts(2);
@@ -115,12 +90,24 @@ int vtkLaplacianDeformationFilter::FillInputPortInformation(int port, vtkInforma
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
-  return this->Superclass::FillInputPortInformation(port, info);
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
 }
 
-bool vtkLaplacianDeformationFilter::IsCholmodAvailable()
+int vtkLaplacianDeformationFilter::FillOutputPortInformation(int, vtkInformation* info)
 {
-  return le::SparseCholesky::IsAvailable(le::SolverBackend::Cholmod);
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+  return 1;
+}
+
+vtkPolyData* vtkLaplacianDeformationFilter::GetOutput()
+{
+  return this->GetOutput(0);
+}
+
+vtkPolyData* vtkLaplacianDeformationFilter::GetOutput(int port)
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(port));
 }
 
 void vtkLaplacianDeformationFilter::SetHandleTransform(int group, vtkLinearTransform* transform)
@@ -194,19 +181,6 @@ vtkMTimeType vtkLaplacianDeformationFilter::GetMTime()
     this->Superclass::GetMTime(), this->Internals->Source.GetHandles().GetTransformsMTime());
 }
 
-void vtkLaplacianDeformationFilter::SetDragging(vtkTypeBool dragging)
-{
-  if (this->Dragging == dragging)
-  {
-    return;
-  }
-  this->Dragging = dragging;
-  if (this->Internals->Pipeline.SetDragging(dragging != 0))
-  {
-    this->Modified(); // the next update settles the pose the drag left
-  }
-}
-
 int vtkLaplacianDeformationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -272,27 +246,12 @@ lep::RegionParameters vtkLaplacianDeformationFilter::RegionParameters() const
 
 lep::SolverSettings vtkLaplacianDeformationFilter::Settings()
 {
-  lep::SolverSettings settings;
-  settings.LaplacianWeights = this->LaplacianWeights;
+  lep::SolverSettings settings = this->SharedSettings();
   settings.OperatorOrder = this->OperatorOrder;
   settings.HandleWeight = this->HandleWeight;
   settings.AnchorWeight = this->AnchorWeight;
-  settings.Solver = this->Solver;
-  settings.Ordering = this->Ordering;
-  settings.MaximumFactorMemory = this->MaximumFactorMemory;
   settings.Distributed = this->GetDistributedSolver();
-  settings.RotationMode = this->RotationMode;
   settings.NormalSmoothingRadius = this->RegionParameters().NormalSmoothingRadius;
-  settings.NumberOfIterations = this->NumberOfIterations;
-  settings.PreserveDetailScale = this->PreserveDetailScale != 0;
-  settings.ImplicitFormulation = this->ImplicitFormulation;
-  settings.ARAPIterations = this->ARAPIterations;
-  settings.RotationSmoothing = this->RotationSmoothing;
-  settings.Convergence = this->Convergence;
-  settings.Acceleration = this->Acceleration != 0;
-  settings.Extrapolation = this->Extrapolation != 0;
-  settings.Dragging = this->Dragging != 0;
-  settings.DragARAPIterations = this->DragARAPIterations;
   settings.LargeRegionVertices = this->LargeRegionVertices;
   settings.ProxyNodes = this->ProxyNodes;
   return settings;
@@ -344,11 +303,6 @@ void vtkLaplacianDeformationFilter::WriteEdit(
 {
   this->Internals->Pipeline.Write(
     rest, output, edit, this->Outputs());
-}
-
-const lep::EditPipeline& vtkLaplacianDeformationFilter::GetEditPipeline() const
-{
-  return this->Internals->Pipeline;
 }
 
 bool vtkLaplacianDeformationFilter::SolveDragStep(
@@ -474,56 +428,6 @@ int vtkLaplacianDeformationFilter::GetNumberOfSurfaceVertices()
   return this->Internals->Pipeline.GetFacts().NumberOfSurfaceVertices;
 }
 
-double vtkLaplacianDeformationFilter::GetTopologyTime()
-{
-  return this->Internals->Pipeline.GetFacts().TopologyTime;
-}
-
-double vtkLaplacianDeformationFilter::GetSetupTime()
-{
-  return this->Internals->Pipeline.GetFacts().SetupTime;
-}
-
-double vtkLaplacianDeformationFilter::GetAnalysisTime()
-{
-  return this->Internals->Pipeline.GetFacts().AnalysisTime;
-}
-
-double vtkLaplacianDeformationFilter::GetFactorizationTime()
-{
-  return this->Internals->Pipeline.GetFacts().FactorizationTime;
-}
-
-double vtkLaplacianDeformationFilter::GetSolveTime()
-{
-  return this->Internals->Pipeline.GetFacts().SolveTime;
-}
-
-int vtkLaplacianDeformationFilter::GetNumberOfFactorizations()
-{
-  return this->Internals->Pipeline.GetEditor().GetNumberOfFactorizations();
-}
-
-int vtkLaplacianDeformationFilter::GetNumberOfFactorizationAttempts()
-{
-  return this->Internals->Pipeline.GetEditor().GetNumberOfFactorizationAttempts();
-}
-
-int vtkLaplacianDeformationFilter::GetNumberOfARAPIterations()
-{
-  return this->Internals->Pipeline.GetFacts().NumberOfARAPIterations;
-}
-
-double vtkLaplacianDeformationFilter::GetARAPEnergy()
-{
-  return this->Internals->Pipeline.GetFacts().ARAPEnergy;
-}
-
-double vtkLaplacianDeformationFilter::GetFactorMemory()
-{
-  return this->Internals->Pipeline.GetFactorMemory();
-}
-
 vtkTypeBool vtkLaplacianDeformationFilter::GetFactoredAcrossProcesses()
 {
   return this->Internals->Pipeline.GetEditor().IsFactorDistributed();
@@ -534,7 +438,7 @@ void vtkLaplacianDeformationFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   this->PrintRegionProperties(os, indent);
   this->PrintSolverProperties(os, indent);
-  os << indent << "Last update:\n";
+  os << indent << "Region of the last update:\n";
   this->PrintLastUpdate(os, indent.GetNextIndent());
 }
 
@@ -557,7 +461,6 @@ void vtkLaplacianDeformationFilter::PrintRegionProperties(ostream& os, vtkIndent
   os << indent << "AnchorPadding: " << this->AnchorPadding << "\n";
   os << indent << "DistanceMethod: "
      << EnumName(this->DistanceMethod, { "FastMarching", "EdgePaths" }) << "\n";
-  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
   this->Internals->Source.GetHandles().PrintSelf(os, indent);
   os << indent << "NumberOfCommits: " << this->Internals->Rest.GetNumberOfCommits() << "\n";
 }
@@ -566,52 +469,17 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
 {
   os << indent << "HandleWeight: " << this->HandleWeight << "\n";
   os << indent << "AnchorWeight: " << this->AnchorWeight << "\n";
-  os << indent << "LaplacianWeights: "
-     << EnumName(this->LaplacianWeights, { "Uniform", "Cotangent" }) << "\n";
   os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
-  os << indent << "RotationMode: "
-     << EnumName(this->RotationMode, { "None", "Explicit", "Implicit", "AsRigidAsPossible" }) << "\n";
-  os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
-  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
-  os << indent << "ImplicitFormulation: "
-     << EnumName(this->ImplicitFormulation, { "PerEdge", "Paper" }) << "\n";
-  os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
-  os << indent << "RotationSmoothing: " << this->RotationSmoothing << "\n";
-  os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
-  os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
   os << indent << "LargeRegionVertices: " << this->LargeRegionVertices << "\n";
   os << indent << "ProxyNodes: " << this->ProxyNodes << "\n";
-  os << indent << "Convergence: " << this->Convergence << "\n";
-  os << indent << "Acceleration: " << (this->Acceleration ? "On" : "Off") << "\n";
-  os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";
-  os << indent << "Solver: " << EnumName(this->Solver, { "CHOLMOD", "SimplicialLDLT", "MUMPS" }) << "\n";
-  os << indent << "Ordering: "
-     << EnumName(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
-  os << indent << "MaximumFactorMemory: " << this->MaximumFactorMemory << " MB";
-  if (this->MaximumFactorMemory <= 0.0)
-  {
-    os << " (automatic: " << lep::SolverSettings::AutomaticFactorLimit() << " MB now)";
-  }
-  os << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";
   os << indent << "RoleColors: " << (this->RoleColors ? "On" : "Off") << "\n";
-  os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
 }
 
 void vtkLaplacianDeformationFilter::PrintLastUpdate(ostream& os, vtkIndent next)
 {
   os << next << "NumberOfROIVertices: " << this->GetNumberOfROIVertices() << "\n";
   os << next << "NumberOfHandleVertices: " << this->GetNumberOfHandleVertices() << "\n";
-  os << next << "TopologyTime: " << this->GetTopologyTime() << " s\n";
-  os << next << "SetupTime: " << this->GetSetupTime() << " s (analysis "
-     << this->GetAnalysisTime() << " s, factorization " << this->GetFactorizationTime() << " s)\n";
-  os << next << "SolveTime: " << this->GetSolveTime() << " s\n";
-  os << next << "NumberOfARAPIterations: " << this->GetNumberOfARAPIterations() << "\n";
-  os << next << "ARAPEnergy: " << this->GetARAPEnergy() << "\n";
   os << next << "NumberOfSurfaceVertices: " << this->GetNumberOfSurfaceVertices() << "\n";
-  os << next << "FactorMemory: " << this->GetFactorMemory() << " MB\n";
   os << next << "FactoredAcrossProcesses: " << this->GetFactoredAcrossProcesses() << "\n";
-  os << next << "NumberOfFactorizations: " << this->GetNumberOfFactorizations()
-     << " (attempted " << this->GetNumberOfFactorizationAttempts() << ")\n";
 }

@@ -19,18 +19,21 @@
  * the filter reports an error, passes the input through and sets GetErrorCode() to
  * vtkErrorCode::UserError until an update succeeds. Documentation/filter.md has the guide.
  *
- * The properties come in groups: the handle, the region, the Laplacian system, the rotation
- * mode and the settings of each mode, the solver, the output, commits, and the results of the
- * last update.
+ * The properties come in groups: the handle, the region, the Laplacian system, large regions,
+ * the output, commits, and the results of the last update. The operator's weights, the rotation
+ * modes and their settings, the solver, Dragging and the results every edit shares are
+ * vtkLaplacianEditFilter's; here NormalSmoothingRadius is in RadiusUnits, and its 0 means 0.2
+ * times the ROI radius (in array mode, the largest distance of an ROI vertex from the handles).
  *
- * @sa vtkPLaplacianDeformationFilter vtkDeformationHandleWidget vtkLaplacianDragPreview
+ * @sa vtkLaplacianEditFilter vtkPLaplacianDeformationFilter vtkDeformationHandleWidget
+ * vtkLaplacianDragPreview
  */
 #ifndef vtkLaplacianDeformationFilter_h
 #define vtkLaplacianDeformationFilter_h
 
 #include "vtkCommand.h"                      // for vtkCommand::UserEvent
+#include "vtkLaplacianEditFilter.h"
 #include "vtkLaplacianEditingFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory> // for std::unique_ptr
@@ -38,6 +41,7 @@
 class vtkAlgorithmOutput;
 class vtkIntArray;
 class vtkLinearTransform;
+class vtkPolyData;
 class vtkSelection;
 namespace LaplacianEditing
 {
@@ -52,12 +56,16 @@ struct SolverSettings;
 }
 }
 
-class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianDeformationFilter : public vtkPolyDataAlgorithm
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianDeformationFilter : public vtkLaplacianEditFilter
 {
 public:
   static vtkLaplacianDeformationFilter* New();
-  vtkTypeMacro(vtkLaplacianDeformationFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkLaplacianDeformationFilter, vtkLaplacianEditFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The output, a vtkPolyData as the input is. */
+  vtkPolyData* GetOutput();
+  vtkPolyData* GetOutput(int port);
 
   enum SelectionModes
   {
@@ -73,36 +81,6 @@ public:
   {
     DISTANCE_FAST_MARCHING = 0,
     DISTANCE_EDGE_PATHS = 1
-  };
-  enum LaplacianWeightTypes
-  {
-    WEIGHTS_UNIFORM = 0,
-    WEIGHTS_COTANGENT = 1
-  };
-  enum RotationModes
-  {
-    ROTATION_NONE = 0,
-    ROTATION_EXPLICIT = 1,
-    ROTATION_IMPLICIT = 2,
-    ROTATION_AS_RIGID_AS_POSSIBLE = 3
-  };
-  enum ImplicitFormulations
-  {
-    IMPLICIT_PER_EDGE = 0,
-    IMPLICIT_PAPER = 1
-  };
-  enum Solvers
-  {
-    SOLVER_CHOLMOD = 0,
-    SOLVER_SIMPLICIAL_LDLT = 1,
-    SOLVER_MUMPS = 2
-  };
-  enum Orderings
-  {
-    ORDERING_AUTOMATIC = 0,
-    ORDERING_AMD = 1,
-    ORDERING_METIS = 2,
-    ORDERING_NESTED_DISSECTION = 3
   };
   enum EditRoles
   {
@@ -272,31 +250,14 @@ public:
   vtkSetClampMacro(AnchorPadding, double, 0.0, 1.0);
   vtkGetMacro(AnchorPadding, double);
 
-  /**
-   * Treat input points at the same position (to 1e-10 of the region's size) as one surface
-   * vertex, so that texture seams and triangle soups edit as one surface. Default on.
-   */
-  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
   ///@}
 
   /**
    * @name Laplacian system
-   * The differential operator and the soft constraints (Sections 2, 3 and 6).
+   * The operator's order and the soft constraints (Sections 2, 3 and 6); the weights, the
+   * rotation modes and the solver are vtkLaplacianEditFilter's.
    */
   ///@{
-  /**
-   * Weights of the Laplacian: uniform (the paper's umbrella operator, default) or cotangent
-   * (clamped for obtuse and degenerate triangles; see LaplacianOperator.h).
-   */
-  vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
-  vtkGetMacro(LaplacianWeights, int);
-  /** Uniform (umbrella) Laplacian weights, the paper's and the default. */
-  void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
-  /** Cotangent Laplacian weights, clamped for obtuse and degenerate triangles. */
-  void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
-
   /**
    * Order of the differential operator: 1 (Laplacian, default) or 2 (bi-Laplacian, smoother
    * transitions at the anchors). It applies in the None and Explicit modes and in the Paper
@@ -322,120 +283,10 @@ public:
   ///@}
 
   /**
-   * @name Rotation mode
-   * How the differential coordinates follow the edit's local rotations, and each mode's own
-   * settings.
+   * @name Large regions
+   * As-rigid-as-possible regions of any size (Documentation/how-it-works.md).
    */
   ///@{
-  /**
-   * - None (default): they keep their global orientation (Section 3);
-   * - Explicit: each turns with a local frame on smooth normals of a reference edit (Sections
-   *   4 and 7);
-   * - Implicit: linearized transforms solved for with the shape (Section 5; see
-   *   ImplicitFormulation and PreserveDetailScale), one coupled system a region;
-   * - AsRigidAsPossible: the local-global iteration of Sorkine and Alexa (2007), beyond the
-   *   paper; the best quality on large rotations; each update iterates on from the last.
-   * Switching among the first three never refactors the Laplacian system.
-   */
-  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
-  vtkGetMacro(RotationMode, int);
-  /** Differential coordinates keep their global orientation (the default). */
-  void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
-  /** Explicit rotations from smoothed normals (Sections 4 and 7). */
-  void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
-  /** Implicit linearized similarity transforms (Section 5). */
-  void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
-  /** As-rigid-as-possible local-global iteration (Sorkine and Alexa 2007). */
-  void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
-
-  /**
-   * Explicit mode: support radius of the smooth normals, in RadiusUnits. It should exceed the
-   * size of the details, so that the normals are those of the surface under them. 0 (the
-   * default) means 0.2 times the ROI radius (in array mode, the largest distance of an ROI
-   * vertex from the handles).
-   */
-  vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(NormalSmoothingRadius, double);
-
-  /**
-   * Explicit mode: how many times (1 to 100) to re-estimate the rotations from the previous
-   * result and solve again with the same factor. 1 (default) is the paper's method; more fix
-   * the under-rotation of large bends.
-   */
-  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
-  vtkGetMacro(NumberOfIterations, int);
-
-  /**
-   * Implicit mode's energy. Per edge (default): the paper's fitted transforms, as linearized
-   * rotations, matched against every one-ring edge. Paper: Section 5 as published, one residual
-   * per vertex and similarity transforms, which leaves bending nearly free where the region is
-   * held weakly (Armadillo's finger next to the handle moved 2.8 times as far as the handle).
-   */
-  vtkSetClampMacro(ImplicitFormulation, int, IMPLICIT_PER_EDGE, IMPLICIT_PAPER);
-  vtkGetMacro(ImplicitFormulation, int);
-  /** The implicit energy matched per one-ring edge (the default). */
-  void SetImplicitFormulationToPerEdge() { this->SetImplicitFormulation(IMPLICIT_PER_EDGE); }
-  /** The implicit energy as the paper publishes it (Section 5); may inflate free parts. */
-  void SetImplicitFormulationToPaper() { this->SetImplicitFormulation(IMPLICIT_PAPER); }
-
-  /**
-   * Implicit mode: follow the linear solve with one as-rigid-as-possible step, which takes out
-   * the growth of details that linearized rotations cause under large turns (the cactus's
-   * 70-degree turn: area 1.23 without, 1.02 with). Default on. Off, a move is a small dense
-   * product; on, it also costs a local step and the solves of a second, Laplacian factor.
-   */
-  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
-
-  /**
-   * As-rigid-as-possible mode: the most local-global iterations per update (0 to 10000).
-   * Default 30: brings regions of up to 12k vertices within 2% of the converged energy
-   * (Documentation/quality.md); a region of hundreds of thousands of vertices needs far more
-   * (610k: 1.64 times the converged energy after 30, Documentation/performance.md).
-   */
-  vtkSetClampMacro(ARAPIterations, int, 0, 10000);
-  vtkGetMacro(ARAPIterations, int);
-
-  /**
-   * As-rigid-as-possible mode: smoothed rotations (Levi and Gotsman's SR-ARAP, CGAL's
-   * SRE_ARAP), alpha of the penalty alpha A sum |R_i - R_j|^2 on neighbouring rotations, A the
-   * region's area; 0 to 1000. Neighbouring rings then turn together over a length of about
-   * sqrt(alpha A), which bends a region like an elastic rod rather than at a few kinks; large
-   * alphas approach one rotation for the whole region. CGAL's own alpha is relative to the
-   * whole surface's area and defaults to 0.02. Default 0: plain ARAP, as CGAL's default
-   * (SPOKES_AND_RIMS). Changing it rebuilds the region's system, as the other weights do.
-   */
-  vtkSetClampMacro(RotationSmoothing, double, 0.0, 1000.0);
-  vtkGetMacro(RotationSmoothing, double);
-
-  /**
-   * As-rigid-as-possible mode: an update stops early when its iterations lower the energy by
-   * less than this fraction of it per iteration, on average over the last three (a drag step:
-   * its last iteration); 0 to 1. Default 1e-3.
-   */
-  vtkSetClampMacro(Convergence, double, 0.0, 1.0);
-  vtkGetMacro(Convergence, double);
-
-  /**
-   * As-rigid-as-possible mode: a handle is being dragged (vtkDeformationHandleWidget and its
-   * ParaView panel set it). Meanwhile each update runs at most DragARAPIterations, so every
-   * frame costs about the same. Turning it on does not mark the filter modified; turning it off
-   * does (unless the drag was previewed, vtkLaplacianDragPreview, whose motion the next update
-   * applies anyway), and the next update settles the shape: ARAPIterations in full, without
-   * the Convergence test, which the slow tail a drag leaves would pass at once. Default off.
-   */
-  void SetDragging(vtkTypeBool dragging);
-  vtkGetMacro(Dragging, vtkTypeBool);
-  vtkBooleanMacro(Dragging, vtkTypeBool);
-
-  /**
-   * As-rigid-as-possible mode: the most iterations per update while Dragging (1 to 10000;
-   * never more than ARAPIterations). Default 2.
-   */
-  vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
-  vtkGetMacro(DragARAPIterations, int);
-
   /**
    * As-rigid-as-possible mode: a region of more vertices than this is dragged on a proxy of
    * about ProxyNodes nodes, at the cost of a small region whatever its size, and settled at
@@ -452,64 +303,6 @@ public:
    */
   vtkSetClampMacro(ProxyNodes, int, 100, 1000000);
   vtkGetMacro(ProxyNodes, int);
-
-  /**
-   * As-rigid-as-possible mode: Anderson acceleration mixes the last iterates, with a safeguard
-   * that keeps the energy falling; it reaches a given energy in several times fewer iterations.
-   * Default on.
-   */
-  vtkSetMacro(Acceleration, vtkTypeBool);
-  vtkGetMacro(Acceleration, vtkTypeBool);
-  vtkBooleanMacro(Acceleration, vtkTypeBool);
-
-  /**
-   * As-rigid-as-possible mode: an update that continues the last one with moved handles starts
-   * from the last result moved on by the last update's change (a constant-velocity guess during
-   * a drag); with the handles held still, updates iterate plainly, so the shape settles.
-   * Default on; off, each update starts from the last result.
-   */
-  vtkSetMacro(Extrapolation, vtkTypeBool);
-  vtkGetMacro(Extrapolation, vtkTypeBool);
-  vtkBooleanMacro(Extrapolation, vtkTypeBool);
-  ///@}
-
-  /**
-   * @name Solver
-   * The sparse factorization (Section 8).
-   */
-  ///@{
-  /**
-   * Sparse Cholesky backend: CHOLMOD supernodal (default where built in), Eigen's
-   * SimplicialLDLT, or MUMPS, which factors across the MPI processes (only
-   * vtkPLaplacianDeformationFilter under MPI, in a build with MUMPS). Under MPI, a CHOLMOD factor
-   * larger than MaximumFactorMemory is factored with MUMPS across the processes as well.
-   */
-  vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_MUMPS);
-  vtkGetMacro(Solver, int);
-  /** CHOLMOD's supernodal Cholesky (the default where built in). */
-  void SetSolverToCholmod() { this->SetSolver(SOLVER_CHOLMOD); }
-  /** Eigen's SimplicialLDLT. */
-  void SetSolverToSimplicialLDLT() { this->SetSolver(SOLVER_SIMPLICIAL_LDLT); }
-  /** MUMPS across the MPI processes. */
-  void SetSolverToMUMPS() { this->SetSolver(SOLVER_MUMPS); }
-  /** Whether this build has CHOLMOD. */
-  static bool IsCholmodAvailable();
-
-  /**
-   * CHOLMOD's fill-reducing ordering: automatic (default: AMD below 300,000 unknowns, METIS
-   * from there and for the implicit mode's 3 x 3 block system), AMD, METIS or CHOLMOD's nested
-   * dissection. SimplicialLDLT always uses AMD.
-   */
-  vtkSetClampMacro(Ordering, int, ORDERING_AUTOMATIC, ORDERING_NESTED_DISSECTION);
-  vtkGetMacro(Ordering, int);
-
-  /**
-   * Largest factor to attempt, in megabytes: CHOLMOD predicts a factor's size, and a larger one
-   * is refused with an error instead of exhausting memory (under MPI with MUMPS, spread across
-   * the processes). 0 (the default): 80% of the physical memory available.
-   */
-  vtkSetClampMacro(MaximumFactorMemory, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumFactorMemory, double);
   ///@}
 
   /**
@@ -532,14 +325,6 @@ public:
   vtkSetMacro(RoleColors, vtkTypeBool);
   vtkGetMacro(RoleColors, vtkTypeBool);
   vtkBooleanMacro(RoleColors, vtkTypeBool);
-
-  /**
-   * Add the Displacement point array, the output's points minus the rest's (three components,
-   * of the points' type), written in place like the points. Default off.
-   */
-  vtkSetMacro(OutputDisplacement, vtkTypeBool);
-  vtkGetMacro(OutputDisplacement, vtkTypeBool);
-  vtkBooleanMacro(OutputDisplacement, vtkTypeBool);
 
   /**
    * Whole copies of a rest array (points, normals, EditRole) the output has taken since
@@ -593,34 +378,7 @@ public:
   int GetNumberOfROIVertices();
   int GetNumberOfHandleVertices();
   int GetNumberOfSurfaceVertices();
-  /**
-   * Seconds building the surface graph (only when the input changed); of the region's setup (0
-   * when the cached factor was reused), of its ordering analysis and of its numeric
-   * factorization alone; and solving and writing the output for the current handle transforms.
-   */
-  double GetTopologyTime();
-  double GetSetupTime();
-  double GetAnalysisTime();
-  double GetFactorizationTime();
-  double GetSolveTime();
-  /**
-   * Numeric factorizations completed since construction, and those attempted, failed ones
-   * included: a failed one is not attempted again until something it depends on changes.
-   */
-  int GetNumberOfFactorizations();
-  int GetNumberOfFactorizationAttempts();
-  /**
-   * As-rigid-as-possible mode: the iterations run and the energy reached (per vertex, the
-   * weighted squared residual of its one-ring after its best rotation, over the weighted
-   * squared rest edge lengths; 0 for a rigid motion).
-   */
-  int GetNumberOfARAPIterations();
-  double GetARAPEnergy();
-  /**
-   * Megabytes of the factors held for the current region (0 if unknown), and whether they are
-   * spread across MPI processes (MUMPS).
-   */
-  double GetFactorMemory();
+  /** Whether the factors are spread across MPI processes (MUMPS). */
   vtkTypeBool GetFactoredAcrossProcesses();
   ///@}
 
@@ -631,6 +389,12 @@ protected:
   ~vtkLaplacianDeformationFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  // The output is always a vtkPolyData, made by the executive from FillOutputPortInformation.
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override
+  {
+    return 1;
+  }
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /**
@@ -646,9 +410,6 @@ protected:
    */
   void WriteEdit(vtkPolyData* rest, vtkPolyData* output,
     const LaplacianEditing::Pipeline::OutputEdit* edit);
-
-  /** The pipeline that runs the edits, for the parallel filter to share them out. */
-  const LaplacianEditing::Pipeline::EditPipeline& GetEditPipeline() const;
 
   /**
    * The labels of the selection on port 1 for the surface being edited
@@ -683,29 +444,11 @@ protected:
   int DistanceMethod = DISTANCE_FAST_MARCHING;
   double HandleWeight = 100.0;
   double AnchorWeight = 1.0;
-  int LaplacianWeights = WEIGHTS_UNIFORM;
   int OperatorOrder = 1;
-  int RotationMode = ROTATION_NONE;
-  double NormalSmoothingRadius = 0.0;
-  int NumberOfIterations = 1;
-  vtkTypeBool PreserveDetailScale = 1;
-  int ImplicitFormulation = IMPLICIT_PER_EDGE;
-  int ARAPIterations = 30;
-  double RotationSmoothing = 0.0;
-  vtkTypeBool Dragging = 0;
-  int DragARAPIterations = 2;
   int LargeRegionVertices = 60000;
   int ProxyNodes = 20000;
-  double Convergence = 1e-3;
-  vtkTypeBool Acceleration = 1;
-  vtkTypeBool Extrapolation = 1;
-  int Solver = SOLVER_CHOLMOD;
-  int Ordering = ORDERING_AUTOMATIC;
-  double MaximumFactorMemory = 0.0;
-  vtkTypeBool MergeCoincidentPoints = 1;
   vtkTypeBool GenerateEditRoles = 1;
   vtkTypeBool RoleColors = 1;
-  vtkTypeBool OutputDisplacement = 0;
 
 private:
   friend class vtkLaplacianDragPreview;

@@ -3,7 +3,6 @@
 #include "EditPipeline.h"
 #include "LandmarkSource.h"
 #include "VolumeFollower.h"
-#include "SparseCholesky.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
@@ -33,13 +32,6 @@ vtkStandardNewMacro(vtkLaplacianLandmarkWarp);
 vtkCxxSetObjectMacro(vtkLaplacianLandmarkWarp, SourceLandmarks, vtkPoints);
 vtkCxxSetObjectMacro(vtkLaplacianLandmarkWarp, TargetLandmarks, vtkPoints);
 
-// The warp's enums are the deformation filter's, and so the core's, value for value.
-static_assert(static_cast<int>(le::RotationMode::AsRigidAsPossible) ==
-    vtkLaplacianLandmarkWarp::ROTATION_AS_RIGID_AS_POSSIBLE &&
-  static_cast<int>(le::RotationMode::None) == vtkLaplacianLandmarkWarp::ROTATION_NONE &&
-  static_cast<int>(le::LaplacianWeights::Cotangent) == vtkLaplacianLandmarkWarp::WEIGHTS_COTANGENT &&
-  static_cast<int>(le::SolverBackend::SimplicialLDLT) == vtkLaplacianLandmarkWarp::SOLVER_SIMPLICIAL_LDLT);
-
 namespace
 {
 // The pull of an exact fit's soft constraints: strong enough that the corrections converge in
@@ -57,12 +49,12 @@ struct vtkLaplacianLandmarkWarp::vtkInternals
 {
   explicit vtkInternals(vtkLaplacianLandmarkWarp* warp)
     : Source(warp)
-    , Pipeline(warp, [warp](unsigned long code) { warp->SetErrorCode(code); })
+    , Pipeline(warp->GetEditPipeline())
   {
   }
 
   lep::LandmarkSource Source;
-  lep::EditPipeline Pipeline;
+  lep::EditPipeline& Pipeline; // vtkLaplacianEditFilter's
   vtkNew<vtkPoints> PortTargets;
   // Ports 1 and 2's landmarks, paired.
   vtkNew<vtkPoints> PairedSources;
@@ -80,10 +72,11 @@ struct vtkLaplacianLandmarkWarp::vtkInternals
 vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
   : Internals(new vtkInternals(this))
 {
-  if (!le::SparseCholesky::IsAvailable(le::SolverBackend::Cholmod))
-  {
-    this->Solver = SOLVER_SIMPLICIAL_LDLT;
-  }
+  // A warp's defaults: it solves to convergence at once, where an edit is dragged.
+  this->RotationMode = ROTATION_AS_RIGID_AS_POSSIBLE;
+  this->LaplacianWeights = WEIGHTS_COTANGENT;
+  this->ARAPIterations = 100;
+  this->Convergence = 1e-4;
   this->SetNumberOfInputPorts(3);
   this->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
   this->Internals->Volume.SetFilter(this);
@@ -185,19 +178,6 @@ vtkMTimeType vtkLaplacianLandmarkWarp::GetMTime()
     time = points ? std::max(time, points->GetMTime()) : time;
   }
   return time;
-}
-
-void vtkLaplacianLandmarkWarp::SetDragging(vtkTypeBool dragging)
-{
-  if (this->Dragging == dragging)
-  {
-    return;
-  }
-  this->Dragging = dragging;
-  if (this->Internals->Pipeline.SetDragging(dragging != 0))
-  {
-    this->Modified(); // the next update settles the shape the drag left
-  }
 }
 
 int vtkLaplacianLandmarkWarp::RequestData(
@@ -415,22 +395,12 @@ bool vtkLaplacianLandmarkWarp::PairLandmarks(vtkPointSet* sources, vtkPointSet* 
 
 lep::SolverSettings vtkLaplacianLandmarkWarp::Settings(double diagonal) const
 {
-  lep::SolverSettings settings;
-  settings.LaplacianWeights = this->LaplacianWeights;
-  settings.Solver = this->Solver;
-  settings.RotationMode = this->RotationMode;
+  lep::SolverSettings settings = this->SharedSettings();
   settings.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
     ? this->NormalSmoothingRadius
     : AutomaticSmoothingFraction * diagonal;
-  settings.NumberOfIterations = this->NumberOfIterations;
-  settings.PreserveDetailScale = this->PreserveDetailScale != 0;
-  settings.ARAPIterations = this->ARAPIterations;
-  settings.Convergence = this->Convergence;
-  settings.Dragging = this->Dragging != 0;
-  settings.DragARAPIterations = this->DragARAPIterations;
   settings.Bending = this->BendingWeight;
   settings.SplinePrior = this->SplinePriorWeight;
-  settings.RotationSmoothing = this->RotationSmoothing;
   return settings;
 }
 
@@ -468,34 +438,9 @@ int vtkLaplacianLandmarkWarp::GetNumberOfWarpedVertices()
   return this->Internals->Pipeline.GetEditor().GetRegion().GetNumberOfVertices();
 }
 
-int vtkLaplacianLandmarkWarp::GetNumberOfFactorizations()
-{
-  return this->Internals->Pipeline.GetEditor().GetNumberOfFactorizations();
-}
-
-int vtkLaplacianLandmarkWarp::GetNumberOfARAPIterations()
-{
-  return this->Internals->Pipeline.GetFacts().NumberOfARAPIterations;
-}
-
-double vtkLaplacianLandmarkWarp::GetARAPEnergy()
-{
-  return this->Internals->Pipeline.GetFacts().ARAPEnergy;
-}
-
 double vtkLaplacianLandmarkWarp::GetBindingTime()
 {
   return this->Internals->Source.GetBindingTime();
-}
-
-double vtkLaplacianLandmarkWarp::GetSetupTime()
-{
-  return this->Internals->Pipeline.GetFacts().SetupTime;
-}
-
-double vtkLaplacianLandmarkWarp::GetSolveTime()
-{
-  return this->Internals->Pipeline.GetFacts().SolveTime;
 }
 
 void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
@@ -508,29 +453,11 @@ void vtkLaplacianLandmarkWarp::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
   os << indent << "ExactFit: " << (this->ExactFit ? "On" : "Off") << "\n";
   os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
-  os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
-  os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
-  os << indent << "RotationMode: " << this->RotationMode << "\n";
-  os << indent << "LaplacianWeights: " << this->LaplacianWeights << "\n";
-  os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";
-  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "PreserveDetailScale: " << (this->PreserveDetailScale ? "On" : "Off") << "\n";
   os << indent << "BendingWeight: " << this->BendingWeight << "\n";
   os << indent << "SplinePriorWeight: " << this->SplinePriorWeight << "\n";
-  os << indent << "RotationSmoothing: " << this->RotationSmoothing << "\n";
-  os << indent << "ARAPIterations: " << this->ARAPIterations << "\n";
-  os << indent << "Convergence: " << this->Convergence << "\n";
-  os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
-  os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
-  os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "NumberOfLandmarks: " << this->NumberOfLandmarks << "\n";
   os << indent << "NumberOfWarpedVertices: " << this->GetNumberOfWarpedVertices() << "\n";
-  os << indent << "NumberOfFactorizations: " << this->GetNumberOfFactorizations() << "\n";
-  os << indent << "NumberOfARAPIterations: " << this->GetNumberOfARAPIterations() << "\n";
-  os << indent << "ARAPEnergy: " << this->GetARAPEnergy() << "\n";
   os << indent << "MaximumLandmarkDistance: " << this->MaximumLandmarkDistance << "\n";
   os << indent << "RMSLandmarkDistance: " << this->RMSLandmarkDistance << "\n";
   os << indent << "BindingTime: " << this->GetBindingTime() << "\n";
-  os << indent << "SetupTime: " << this->GetSetupTime() << "\n";
-  os << indent << "SolveTime: " << this->GetSolveTime() << "\n";
 }

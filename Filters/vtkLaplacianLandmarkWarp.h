@@ -29,19 +29,24 @@
  * inverting a cell, as in vtkLaplacianVolumeDeformationFilter (with its ScaledJacobian and
  * EditFailed cell arrays).
  *
+ * The rotation modes, the solver, Dragging and the shared results are vtkLaplacianEditFilter's,
+ * with the defaults of a warp, which solves to convergence at once where an edit is dragged:
+ * AsRigidAsPossible, cotangent weights, 100 ARAPIterations and a Convergence of 1e-4. Here
+ * NormalSmoothingRadius is in mesh units, and its 0 means 0.05 of the input's diagonal.
+ *
  * Output: the input (a vtkPolyData or a vtkUnstructuredGrid) with the warped components' points
  * moved, all point and cell data passed through, normals refreshed, and a "LandmarkDistance"
  * field array, how far each landmark ended from its target (0 up to rounding with ExactFit). On bad input the filter reports an
  * error, passes the input through and sets GetErrorCode() to vtkErrorCode::UserError.
  * Documentation/landmark-warps.md has the guide.
  *
- * @sa vtkLaplacianDeformationFilter vtkThinPlateSplineTransform
+ * @sa vtkLaplacianEditFilter vtkLaplacianDeformationFilter vtkThinPlateSplineTransform
  */
 #ifndef vtkLaplacianLandmarkWarp_h
 #define vtkLaplacianLandmarkWarp_h
 
+#include "vtkLaplacianEditFilter.h"
 #include "vtkLaplacianEditingFiltersModule.h" // for export macro
-#include "vtkPointSetAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
 
@@ -59,31 +64,12 @@ struct SolverSettings;
 }
 }
 
-class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianLandmarkWarp : public vtkPointSetAlgorithm
+class VTKLAPLACIANEDITINGFILTERS_EXPORT vtkLaplacianLandmarkWarp : public vtkLaplacianEditFilter
 {
 public:
   static vtkLaplacianLandmarkWarp* New();
-  vtkTypeMacro(vtkLaplacianLandmarkWarp, vtkPointSetAlgorithm);
+  vtkTypeMacro(vtkLaplacianLandmarkWarp, vtkLaplacianEditFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  // The deformation filter's values.
-  enum LaplacianWeightTypes
-  {
-    WEIGHTS_UNIFORM = 0,
-    WEIGHTS_COTANGENT = 1
-  };
-  enum RotationModes
-  {
-    ROTATION_NONE = 0,
-    ROTATION_EXPLICIT = 1,
-    ROTATION_IMPLICIT = 2,
-    ROTATION_AS_RIGID_AS_POSSIBLE = 3
-  };
-  enum Solvers
-  {
-    SOLVER_CHOLMOD = 0,
-    SOLVER_SIMPLICIAL_LDLT = 1
-  };
 
   /**
    * @name Landmarks
@@ -150,57 +136,13 @@ public:
   vtkBooleanMacro(ExactFit, vtkTypeBool);
   vtkSetClampMacro(LandmarkWeight, double, 1e-6, 1e6);
   vtkGetMacro(LandmarkWeight, double);
-
-  /** Points at the same position, up to rounding, are one surface vertex (on). */
-  vtkSetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkGetMacro(MergeCoincidentPoints, vtkTypeBool);
-  vtkBooleanMacro(MergeCoincidentPoints, vtkTypeBool);
-
-  /**
-   * Add the Displacement point array, the output's points minus the input's (three components),
-   * written in place like the points: what a grid transform samples. Default off.
-   */
-  vtkSetMacro(OutputDisplacement, vtkTypeBool);
-  vtkGetMacro(OutputDisplacement, vtkTypeBool);
-  vtkBooleanMacro(OutputDisplacement, vtkTypeBool);
   ///@}
 
   /**
-   * @name Rotation mode
-   * As vtkLaplacianDeformationFilter's properties of the same names, with the defaults of a
-   * warp: a warp solves to convergence at once, where an edit is dragged.
+   * @name As-rigid-as-possible terms
+   * A warp's own terms beside vtkLaplacianEditFilter's rotation modes.
    */
   ///@{
-  /**
-   * How details keep their orientation: AsRigidAsPossible (the default: the best quality under
-   * large rotations), None, Explicit or Implicit.
-   */
-  vtkSetClampMacro(RotationMode, int, ROTATION_NONE, ROTATION_AS_RIGID_AS_POSSIBLE);
-  vtkGetMacro(RotationMode, int);
-  void SetRotationModeToNone() { this->SetRotationMode(ROTATION_NONE); }
-  void SetRotationModeToExplicit() { this->SetRotationMode(ROTATION_EXPLICIT); }
-  void SetRotationModeToImplicit() { this->SetRotationMode(ROTATION_IMPLICIT); }
-  void SetRotationModeToAsRigidAsPossible() { this->SetRotationMode(ROTATION_AS_RIGID_AS_POSSIBLE); }
-
-  /** Edge weights of the operator: Cotangent (the default, clamped) or Uniform. */
-  vtkSetClampMacro(LaplacianWeights, int, WEIGHTS_UNIFORM, WEIGHTS_COTANGENT);
-  vtkGetMacro(LaplacianWeights, int);
-  void SetLaplacianWeightsToUniform() { this->SetLaplacianWeights(WEIGHTS_UNIFORM); }
-  void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
-
-  /**
-   * Explicit mode: the smooth normals' support in mesh units; 0 (the default) means 0.05 of
-   * the input's diagonal. Explicit mode: the reference-rotate-solve passes (1). Implicit mode:
-   * the rigid step after the linear solve (on).
-   */
-  vtkSetClampMacro(NormalSmoothingRadius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(NormalSmoothingRadius, double);
-  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
-  vtkGetMacro(NumberOfIterations, int);
-  vtkSetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkGetMacro(PreserveDetailScale, vtkTypeBool);
-  vtkBooleanMacro(PreserveDetailScale, vtkTypeBool);
-
   /**
    * As-rigid-as-possible mode: the weight of its bending term (100), a second-order term that
    * keeps the surface smooth between sparse landmarks. Without it (0), the first-order energy
@@ -220,42 +162,6 @@ public:
    */
   vtkSetClampMacro(SplinePriorWeight, double, 0.0, 1e3);
   vtkGetMacro(SplinePriorWeight, double);
-
-  /**
-   * As-rigid-as-possible mode: smoothed rotations, alpha as in
-   * vtkLaplacianDeformationFilter::SetRotationSmoothing (0 to 1000). Default 0.
-   */
-  vtkSetClampMacro(RotationSmoothing, double, 0.0, 1000.0);
-  vtkGetMacro(RotationSmoothing, double);
-
-  /**
-   * As-rigid-as-possible mode: the most iterations an update (100) and the relative energy
-   * decrease an iteration that stops it (1e-4).
-   */
-  vtkSetClampMacro(ARAPIterations, int, 0, 10000);
-  vtkGetMacro(ARAPIterations, int);
-  vtkSetClampMacro(Convergence, double, 0.0, 1.0);
-  vtkGetMacro(Convergence, double);
-
-  /**
-   * As-rigid-as-possible mode: a landmark is being dragged. Meanwhile each update runs at most
-   * DragARAPIterations (2); turning it off marks the warp modified, and the next update settles
-   * the shape: ARAPIterations in full, without the Convergence test.
-   */
-  void SetDragging(vtkTypeBool dragging);
-  vtkGetMacro(Dragging, vtkTypeBool);
-  vtkBooleanMacro(Dragging, vtkTypeBool);
-  vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
-  vtkGetMacro(DragARAPIterations, int);
-  ///@}
-
-  /**
-   * @name Solver
-   */
-  ///@{
-  /** The sparse solver: CHOLMOD (the default where built) or Eigen's SimplicialLDLT. */
-  vtkSetClampMacro(Solver, int, SOLVER_CHOLMOD, SOLVER_SIMPLICIAL_LDLT);
-  vtkGetMacro(Solver, int);
   ///@}
 
   /**
@@ -263,23 +169,17 @@ public:
    */
   ///@{
   /**
-   * The landmarks, the vertices warped (the components holding landmarks), the factorizations
-   * so far, the as-rigid-as-possible iterations and energy, the largest and root-mean-square
-   * distance of a landmark from its target (mesh units), and the seconds spent binding the
-   * landmarks, setting up (region and factorization) and solving.
+   * The landmarks, the vertices warped (the components holding landmarks), the largest and
+   * root-mean-square distance of a landmark from its target (mesh units), and the seconds spent
+   * binding the landmarks.
    */
   vtkGetMacro(NumberOfLandmarks, int);
   /** The targets the last update warped to, moved ones included: three components a landmark. */
   vtkDoubleArray* GetWarpedTargets();
   int GetNumberOfWarpedVertices();
-  int GetNumberOfFactorizations();
-  int GetNumberOfARAPIterations();
-  double GetARAPEnergy();
   vtkGetMacro(MaximumLandmarkDistance, double);
   vtkGetMacro(RMSLandmarkDistance, double);
   double GetBindingTime();
-  double GetSetupTime();
-  double GetSolveTime();
   ///@}
 
   /** Includes the landmarks' modification times. */
@@ -313,25 +213,12 @@ private:
 
   vtkPoints* SourceLandmarks = nullptr;
   vtkPoints* TargetLandmarks = nullptr;
-  int RotationMode = ROTATION_AS_RIGID_AS_POSSIBLE;
-  int LaplacianWeights = WEIGHTS_COTANGENT;
   vtkTypeBool ExactFit = 1;
   double LandmarkWeight = 1.0;
   double BendingWeight = 100.0;
   double SplinePriorWeight = 1.0;
-  double RotationSmoothing = 0.0;
-  int ARAPIterations = 100;
-  double Convergence = 1e-4;
-  vtkTypeBool Dragging = 0;
-  int DragARAPIterations = 2;
-  double NormalSmoothingRadius = 0.0;
-  int NumberOfIterations = 1;
-  vtkTypeBool PreserveDetailScale = 1;
   double BindingTolerance = 0.01;
   double MaximumBindingDistance = 0.1;
-  vtkTypeBool MergeCoincidentPoints = 1;
-  vtkTypeBool OutputDisplacement = 0;
-  int Solver = SOLVER_CHOLMOD;
 
   int NumberOfLandmarks = 0;
   double MaximumLandmarkDistance = 0.0;
