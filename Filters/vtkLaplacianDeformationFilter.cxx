@@ -247,7 +247,6 @@ lep::RegionParameters vtkLaplacianDeformationFilter::RegionParameters() const
 lep::SolverSettings vtkLaplacianDeformationFilter::Settings()
 {
   lep::SolverSettings settings = this->SharedSettings();
-  settings.OperatorOrder = this->OperatorOrder;
   settings.HandleWeight = this->HandleWeight;
   settings.AnchorWeight = this->AnchorWeight;
   settings.Distributed = this->GetDistributedSolver();
@@ -469,7 +468,6 @@ void vtkLaplacianDeformationFilter::PrintSolverProperties(ostream& os, vtkIndent
 {
   os << indent << "HandleWeight: " << this->HandleWeight << "\n";
   os << indent << "AnchorWeight: " << this->AnchorWeight << "\n";
-  os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
   os << indent << "LargeRegionVertices: " << this->LargeRegionVertices << "\n";
   os << indent << "ProxyNodes: " << this->ProxyNodes << "\n";
   os << indent << "GenerateEditRoles: " << (this->GenerateEditRoles ? "On" : "Off") << "\n";

@@ -19,9 +19,9 @@
  * the filter reports an error, passes the input through and sets GetErrorCode() to
  * vtkErrorCode::UserError until an update succeeds. Documentation/filter.md has the guide.
  *
- * The properties come in groups: the handle, the region, the Laplacian system, large regions,
- * the output, commits, and the results of the last update. The operator's weights, the rotation
- * modes and their settings, the solver, Dragging and the results every edit shares are
+ * The properties come in groups: the handle, the region, the constraints, large regions,
+ * the output, commits, and the results of the last update. The operator (weights, order), the
+ * rotation modes and their settings, the solver, Dragging and the results every edit shares are
  * vtkLaplacianEditFilter's; here NormalSmoothingRadius is in RadiusUnits, and its 0 means 0.2
  * times the ROI radius (in array mode, the largest distance of an ROI vertex from the handles).
  *
@@ -253,20 +253,10 @@ public:
   ///@}
 
   /**
-   * @name Laplacian system
-   * The operator's order and the soft constraints (Sections 2, 3 and 6); the weights, the
-   * rotation modes and the solver are vtkLaplacianEditFilter's.
+   * @name Constraints
+   * The handle's and the anchors' soft constraints (Sections 3 and 6).
    */
   ///@{
-  /**
-   * Order of the differential operator: 1 (Laplacian, default) or 2 (bi-Laplacian, smoother
-   * transitions at the anchors). It applies in the None and Explicit modes and in the Paper
-   * implicit formulation; the per-edge implicit energy and the as-rigid-as-possible energy
-   * compare one-ring edges, a first-order measure, and ignore it (with a warning).
-   */
-  vtkSetClampMacro(OperatorOrder, int, 1, 2);
-  vtkGetMacro(OperatorOrder, int);
-
   /**
    * Soft-constraint weight of the handle vertices (1e-3 to 1e6). Default 100, so that handles
    * land within a small fraction of a percent of their targets.
@@ -444,7 +434,6 @@ protected:
   int DistanceMethod = DISTANCE_FAST_MARCHING;
   double HandleWeight = 100.0;
   double AnchorWeight = 1.0;
-  int OperatorOrder = 1;
   int LargeRegionVertices = 60000;
   int ProxyNodes = 20000;
   vtkTypeBool GenerateEditRoles = 1;

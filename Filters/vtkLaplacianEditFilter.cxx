@@ -79,6 +79,7 @@ lep::SolverSettings vtkLaplacianEditFilter::SharedSettings() const
 {
   lep::SolverSettings settings;
   settings.LaplacianWeights = this->LaplacianWeights;
+  settings.OperatorOrder = this->OperatorOrder;
   settings.Solver = this->Solver;
   settings.Ordering = this->Ordering;
   settings.MaximumFactorMemory = this->MaximumFactorMemory;
@@ -152,6 +153,7 @@ void vtkLaplacianEditFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MergeCoincidentPoints: " << (this->MergeCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "LaplacianWeights: "
      << EnumName(this->LaplacianWeights, { "Uniform", "Cotangent" }) << "\n";
+  os << indent << "OperatorOrder: " << this->OperatorOrder << "\n";
   os << indent << "RotationMode: "
      << EnumName(this->RotationMode, { "None", "Explicit", "Implicit", "AsRigidAsPossible" }) << "\n";
   os << indent << "NormalSmoothingRadius: " << this->NormalSmoothingRadius << "\n";

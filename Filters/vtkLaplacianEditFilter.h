@@ -97,6 +97,15 @@ public:
   void SetLaplacianWeightsToCotangent() { this->SetLaplacianWeights(WEIGHTS_COTANGENT); }
 
   /**
+   * Order of the differential operator: 1 (Laplacian, default) or 2 (bi-Laplacian, smoother
+   * transitions at the anchors). It applies in the None and Explicit modes and in the Paper
+   * implicit formulation; the per-edge implicit energy and the as-rigid-as-possible energy
+   * compare one-ring edges, a first-order measure, and ignore it (with a warning).
+   */
+  vtkSetClampMacro(OperatorOrder, int, 1, 2);
+  vtkGetMacro(OperatorOrder, int);
+
+  /**
    * - None: they keep their global orientation (Section 3);
    * - Explicit: each turns with a local frame on smooth normals of a reference edit (Sections
    *   4 and 7);
@@ -325,6 +334,7 @@ protected:
 
   vtkTypeBool MergeCoincidentPoints = 1;
   int LaplacianWeights = WEIGHTS_UNIFORM;
+  int OperatorOrder = 1;
   int RotationMode = ROTATION_NONE;
   double NormalSmoothingRadius = 0.0;
   int NumberOfIterations = 1;

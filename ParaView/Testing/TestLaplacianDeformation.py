@@ -126,6 +126,39 @@ if not all(right for _, right, _ in kept) or not all(cached for cached, _, _ in 
     failures.append(f"the output's point ranges across updates that lift the pole: {kept}")
 print(f"point ranges across updates that lift the pole (cached, right, z max): {kept}")
 
+# Both proxies take the shared properties from the base proxy LaplacianEditFilter, the warp with
+# its own defaults, and each property reaches its filter (read from the filter's PrintSelf: the
+# plugin's classes are not wrapped for Python here). Per property: the edit's value, the warp's.
+warp = simple.LaplacianLandmarkWarp(Input=extreme)
+shared = {"LaplacianWeights": ((0, "Uniform"), (1, "Cotangent")),
+          "OperatorOrder": ((1, "1"), (1, "1")),
+          "RotationMode": ((0, "None"), (3, "AsRigidAsPossible")),
+          "ARAPIterations": ((30, "30"), (100, "100")),
+          "Convergence": ((1e-3, "0.001"), (1e-4, "0.0001")),
+          "MergeCoincidentPoints": ((1, "On"), (1, "On")),
+          "OutputDisplacement": ((0, "Off"), (0, "Off"))}
+
+
+def printed(proxy):
+    """The filter's PrintSelf lines as {name: value}."""
+    proxy.UpdateVTKObjects()
+    lines = str(proxy.GetClientSideObject()).splitlines()
+    return dict(line.strip().split(": ", 1) for line in lines if ": " in line.strip())
+
+
+for proxy, column in ((lift, 0), (warp, 1)):
+    on_server = printed(proxy)
+    for name, defaults in shared.items():
+        value, text = defaults[column]
+        element = proxy.SMProxy.GetProperty(name).GetElement(0)  # a number, enumerations too
+        if element != value or on_server.get(name) != text:
+            failures.append(f"{proxy.GetXMLName()}.{name} is {element} "
+                            f"(filter: {on_server.get(name)}), expected {value} ({text})")
+warp.ARAPIterations = 7
+if printed(warp).get("ARAPIterations") != "7":
+    failures.append("the warp's ARAPIterations property does not reach its filter")
+print("the shared properties of both proxies come from LaplacianEditFilter")
+
 view = scene.show(deform)
 SaveScreenshot(sys.argv[3], view, ImageResolution=[600, 500])
 failures += scene.compare_with_baseline(sys.argv[3], sys.argv[2], 0.05)
