@@ -17,6 +17,7 @@
 // slowest frame and the release's (the widget's; frames per second leave it out), each
 // update's as-rigid-as-possible iterations (mode 3), and that mode's energy at the last frame
 // of the drag and after the release, over the energy converged at the same pose.
+#include "BenchmarkMeasures.h"
 #include "MeshReader.h"
 #include "XDisplay.h"
 
@@ -45,12 +46,8 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = BenchmarkMeasures::Clock;
+using BenchmarkMeasures::SecondsSince;
 
 // The handle's vertex: 0, or on a generated sphere the one on its equator at +x.
 vtkIdType HandleVertex(vtkPolyData* mesh, const std::string& name)

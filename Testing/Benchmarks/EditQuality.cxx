@@ -28,6 +28,7 @@
 // SRE_ARAP after 1, 5, 50, 1000 and 5000 iterations, each with its RMS distance over the ROI
 // from our run-out result, in fractions of the diagonal. CGAL's alpha is relative to the whole
 // surface's area and ours to the region's, so ours is given alpha times their ratio.
+#include "BenchmarkMeasures.h"
 #include "EditingScene.h"
 #include "ReferenceEdits.h"
 
@@ -59,12 +60,8 @@ namespace le = LaplacianEditing;
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = BenchmarkMeasures::Clock;
+using BenchmarkMeasures::SecondsSince;
 
 struct Mode
 {

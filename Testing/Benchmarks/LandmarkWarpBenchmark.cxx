@@ -16,6 +16,7 @@
 // warp's BendingWeight, SplinePriorWeight and RotationSmoothing (their defaults: 100, 1, 0). After the largest count, --drags (20) updates move one landmark with the factorization
 // reused (Dragging on): the median seconds an update and the factorizations in all. --draws
 // repeats each count with other random landmarks (seeds 3, 4, ...), each line saying its draw.
+#include "BenchmarkMeasures.h"
 #include "KnownWarps.h"
 
 #include "vtkLaplacianLandmarkWarp.h"
@@ -35,23 +36,9 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::vector<std::string> Split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  for (std::string item; std::getline(stream, item, ',');)
-  {
-    items.push_back(item);
-  }
-  return items;
-}
+using Clock = BenchmarkMeasures::Clock;
+using BenchmarkMeasures::SecondsSince;
+using BenchmarkMeasures::Split;
 
 // How far a result is from the known shape: over the vertices the triangles use.
 struct Distance

@@ -62,12 +62,8 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = BenchmarkMeasures::Clock;
+using BenchmarkMeasures::SecondsSince;
 
 using BenchmarkMeasures::Median;
 using BenchmarkMeasures::PeakMemoryMegabytes;

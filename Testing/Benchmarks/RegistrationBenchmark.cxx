@@ -16,6 +16,7 @@
 // (the correspondence error), and their root-mean-square distance from the target (its
 // triangles, or its points for a cloud); the triangles turned over against the true shape; the
 // seconds. A template fitted onto the whole target (issue 47) is measured against these.
+#include "BenchmarkMeasures.h"
 #include "KnownWarps.h"
 
 #include "vtkLaplacianLandmarkWarp.h"
@@ -46,23 +47,9 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::vector<std::string> Split(const std::string& list)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  for (std::string item; std::getline(stream, item, ',');)
-  {
-    items.push_back(item);
-  }
-  return items;
-}
+using Clock = BenchmarkMeasures::Clock;
+using BenchmarkMeasures::SecondsSince;
+using BenchmarkMeasures::Split;
 
 // The pose of the posed case: 30 degrees about the axis (1, 1, 1) through the template's
 // centre, then scaled by 1.1 about it.
