@@ -35,6 +35,19 @@ void EditPipeline::BeginUpdate()
   this->LastFacts.NumberOfSurfaceVertices = surfaceVertices;
   this->Solved = false;
   this->Previewed = false;
+  this->SetProgressSpan(0.0, 1.0);
+}
+
+void EditPipeline::SetProgressSpan(double start, double end)
+{
+  this->ProgressStart = start;
+  this->ProgressEnd = end;
+}
+
+void EditPipeline::ReportProgress(double progress)
+{
+  this->Filter->UpdateProgress(
+    this->ProgressStart + progress * (this->ProgressEnd - this->ProgressStart));
 }
 
 bool EditPipeline::Check(const std::string& error)
@@ -54,7 +67,7 @@ bool EditPipeline::Aborted(double progress)
   {
     return true;
   }
-  this->Filter->UpdateProgress(progress);
+  this->ReportProgress(progress);
   return false;
 }
 
@@ -63,7 +76,7 @@ bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& sourc
 {
   // Progress after each step that may take seconds (graph, region and its factor, rotation
   // model and its factor); the abort flag is read between them.
-  this->Filter->UpdateProgress(0.1);
+  this->ReportProgress(0.1);
   if (!this->UpdateSurface(rest, source.ComputeReach(rest), merge) || this->Aborted(0.3) ||
     !this->UpdateRegion(rest, source, settings) || this->Aborted(0.6))
   {
@@ -84,7 +97,7 @@ bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& sourc
     this->Write(rest, output, &edit, options);
     this->LastFacts.SolveTime += watch.Seconds();
   }
-  this->Filter->UpdateProgress(1.0);
+  this->ReportProgress(1.0);
   return this->Solved;
 }
 

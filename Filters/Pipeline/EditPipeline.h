@@ -62,6 +62,10 @@ public:
   /// Starts an update: no error, and the update's facts afresh.
   void BeginUpdate();
 
+  /// The share of the filter's progress the runs that follow report in: from `start` to `end`
+  /// (a fit runs many; 0 to 1 by default, which BeginUpdate restores).
+  void SetProgressSpan(double start, double end);
+
   /// Reports a non-empty `error` as the filter's error; returns whether there was none.
   bool Check(const std::string& error);
 
@@ -116,6 +120,7 @@ private:
   bool UpdateRotationModel(const SolverSettings& settings);
   bool Solve(EditSource& source);
   bool Aborted(double progress);
+  void ReportProgress(double progress);
 
   vtkAlgorithm* Filter;
   std::function<void(unsigned long)> SetErrorCode;
@@ -132,6 +137,8 @@ private:
   bool Settle = false;
   RotationMode Mode = RotationMode::None;
   bool Previewed = false;
+  double ProgressStart = 0.0;
+  double ProgressEnd = 1.0;
 };
 }
 }
