@@ -1,0 +1,41 @@
+// FoldGuard: a template fit's watch on folds. Where the matches of neighbouring vertices
+// disagree (thin parts matched to two sides, fingers to their neighbours), a strong pull folds
+// the template: triangles turn over. The guard remembers each triangle's normal at the start of
+// a stage, and after each round sets aside for good the vertices of the triangles that turned
+// over since (by more than a right angle, which no stage's motion does): the template's own
+// stiffness carries them from then on.
+#ifndef LaplacianEditing_Pipeline_FoldGuard_h
+#define LaplacianEditing_Pipeline_FoldGuard_h
+
+#include "vtkType.h"
+
+#include <array>
+#include <vector>
+
+class vtkPolyData;
+
+namespace LaplacianEditing
+{
+namespace Pipeline
+{
+class FoldGuard
+{
+public:
+  /// No vertex set aside, for a shape of `points` points.
+  void Reset(vtkIdType points) { this->SetAside.assign(points, 0); }
+  /// The triangles' normals of `shape` at a stage's start.
+  void Remember(vtkPolyData* shape);
+  /// Sets aside the corners of `shape`'s triangles turned over since Remember; returns how many
+  /// vertices it set aside anew.
+  int Check(vtkPolyData* shape);
+  bool IsSetAside(vtkIdType point) const { return this->SetAside[point] != 0; }
+  int GetNumberOfSetAside() const;
+
+private:
+  std::vector<std::array<double, 3>> Normals;
+  std::vector<char> SetAside;
+};
+}
+}
+
+#endif

@@ -1,0 +1,450 @@
+#include "vtkLaplacianSurfaceRegistration.h"
+
+#include "EditPipeline.h"
+#include "FitSource.h"
+#include "FoldGuard.h"
+#include "Stopwatch.h"
+#include "TargetMatcher.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkIterativeClosestPointTransform.h"
+#include "vtkLandmarkTransform.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTransform.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+
+namespace lep = LaplacianEditing::Pipeline;
+
+vtkStandardNewMacro(vtkLaplacianSurfaceRegistration);
+
+namespace
+{
+// The landmarks' own fit, before the matches: met exactly, as the landmark warp meets them, with
+// its pull towards their thin-plate spline.
+constexpr double LandmarkFitWeight = 100.0;
+constexpr double LandmarkSplinePrior = 1.0;
+// The explicit mode's automatic support, a fraction of the diagonal (as the warp's).
+constexpr double AutomaticSmoothingFraction = 0.05;
+// VTK's ICP: enough sampled points and iterations for a pose, not a fit.
+constexpr int PoseLandmarks = 2000;
+constexpr int PoseIterations = 100;
+}
+
+struct vtkLaplacianSurfaceRegistration::vtkInternals
+{
+  explicit vtkInternals(vtkLaplacianSurfaceRegistration* filter)
+    : Pipeline(filter->GetEditPipeline())
+  {
+  }
+
+  lep::EditPipeline& Pipeline; // vtkLaplacianEditFilter's
+  lep::FitSource Source;
+  lep::TargetMatcher Matcher;
+  lep::TargetMatcher::Criteria Criteria;
+  lep::TargetMatcher::Matches Matches;
+  lep::FoldGuard Guard;
+  // The pose (template frame to target frame), and the landmarks' targets in the template's
+  // frame.
+  vtkNew<vtkTransform> Pose;
+  vtkNew<vtkPoints> FrameTargets;
+  vtkNew<vtkPoints> LandmarkTargets;
+  double Diagonal = 1.0;
+};
+
+vtkLaplacianSurfaceRegistration::vtkLaplacianSurfaceRegistration()
+  : Internals(new vtkInternals(this))
+{
+  // A fit's defaults: as rigid as possible with cotangent weights, each round converged as far
+  // as the next round's new matches make worth it.
+  this->RotationMode = ROTATION_AS_RIGID_AS_POSSIBLE;
+  this->LaplacianWeights = WEIGHTS_COTANGENT;
+  this->ARAPIterations = 30;
+  this->Convergence = 1e-3;
+  this->OutputDisplacement = 1;
+  this->SetNumberOfInputPorts(3);
+  this->SetInputArrayToProcess(0, 2, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
+}
+
+vtkLaplacianSurfaceRegistration::~vtkLaplacianSurfaceRegistration() = default;
+
+vtkPolyData* vtkLaplacianSurfaceRegistration::GetOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(0));
+}
+
+vtkPolyData* vtkLaplacianSurfaceRegistration::GetOutput(int port)
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(port));
+}
+
+void vtkLaplacianSurfaceRegistration::SetTargetData(vtkDataObject* target)
+{
+  this->SetInputData(1, target);
+}
+
+void vtkLaplacianSurfaceRegistration::SetLandmarksData(vtkDataObject* landmarks)
+{
+  this->SetInputData(2, landmarks);
+}
+
+vtkLinearTransform* vtkLaplacianSurfaceRegistration::GetPose()
+{
+  return this->Internals->Pose;
+}
+
+int vtkLaplacianSurfaceRegistration::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    return 1;
+  }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), port == 2 ? 1 : 0);
+  return 1;
+}
+
+int vtkLaplacianSurfaceRegistration::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
+  return 1;
+}
+
+int vtkLaplacianSurfaceRegistration::RequestDataObject(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector*)
+{
+  return 1; // the output is a vtkPolyData, as the port says
+}
+
+int vtkLaplacianSurfaceRegistration::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const LaplacianEditing::Stopwatch watch;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPointSet* target = vtkPointSet::GetData(inputVector[1]);
+  vtkPointSet* landmarks = vtkPointSet::GetData(inputVector[2]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkInternals& internals = *this->Internals;
+  lep::EditPipeline& pipeline = internals.Pipeline;
+  pipeline.BeginUpdate();
+  output->ShallowCopy(input);
+  this->NumberOfRounds = 0;
+  this->RMSDistanceToTarget = 0.0;
+  this->TrustedFraction = 0.0;
+  this->FitTime = 0.0;
+  internals.Pose->Identity();
+  const int pieces = outputVector->GetInformationObject(0)->Get(
+    vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (pieces > 1)
+  {
+    pipeline.Check("The fit needs the whole template and was asked for one of " +
+      std::to_string(pieces) + " pieces; run it in a serial session (the built-in server, or "
+      "one process)");
+    return 1;
+  }
+  vtkPoints* sources = nullptr;
+  vtkPoints* targets = nullptr;
+  if (!pipeline.Check(lep::SurfaceAdapter::CheckSurface(input)) ||
+    !pipeline.Check(internals.Matcher.SetTarget(target)) ||
+    !this->FindLandmarks(landmarks, sources, targets))
+  {
+    return 1;
+  }
+  internals.Diagonal = input->GetLength();
+  lep::TargetMatcher::Criteria& criteria = internals.Criteria;
+  criteria.MaximumDistance = this->MaximumMatchDistance * internals.Diagonal;
+  criteria.MinimumCosine = std::cos(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
+  vtkNew<vtkPolyData> shape;
+  shape->ShallowCopy(input);
+  // An aborted fit ends at its last round's shape; a failed one passes the template through.
+  const bool fitted = this->FindPose(shape, target, sources, targets) && this->Fit(input, shape);
+  if (!fitted && (this->GetErrorCode() != vtkErrorCode::NoError || this->NumberOfRounds == 0))
+  {
+    return 1;
+  }
+  this->WriteOutput(input, shape, output);
+  this->FitTime = watch.Seconds();
+  vtkNew<vtkDoubleArray> seconds;
+  seconds->SetName("FitSeconds");
+  seconds->InsertNextValue(this->FitTime);
+  output->GetFieldData()->AddArray(seconds);
+  return 1;
+}
+
+bool vtkLaplacianSurfaceRegistration::FindLandmarks(
+  vtkPointSet* landmarks, vtkPoints*& sources, vtkPoints*& targets)
+{
+  lep::EditPipeline& pipeline = this->Internals->Pipeline;
+  if (!landmarks)
+  {
+    return true;
+  }
+  vtkDataArray* array = this->GetInputArrayToProcess(0, landmarks);
+  if (!landmarks->GetPoints() || !array || array->GetNumberOfComponents() != 3)
+  {
+    return pipeline.Check("The landmarks on input port 2 need points (on the template) and a "
+                          "point array of three components holding their places on the target "
+                          "(\"Target\" unless SetInputArrayToProcess names another).");
+  }
+  const vtkIdType count = landmarks->GetNumberOfPoints();
+  if (count < 3 && this->PoseMode != POSE_NONE)
+  {
+    return pipeline.Check("The pose needs at least three landmark pairs, and input port 2 has " +
+      std::to_string(count) + ": give three or more, none (the pose then comes from iterative "
+      "closest points), or set PoseMode to POSE_NONE.");
+  }
+  sources = landmarks->GetPoints();
+  targets = this->Internals->LandmarkTargets;
+  targets->SetDataTypeToDouble();
+  targets->SetNumberOfPoints(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double target[3];
+    array->GetTuple(i, target);
+    if (!std::isfinite(target[0]) || !std::isfinite(target[1]) || !std::isfinite(target[2]))
+    {
+      return pipeline.Check("Landmark " + std::to_string(i) + "'s target has a NaN or infinite "
+                            "coordinate.");
+    }
+    targets->SetPoint(i, target);
+  }
+  return true;
+}
+
+bool vtkLaplacianSurfaceRegistration::FindPose(
+  vtkPolyData* fitted, vtkPointSet* target, vtkPoints* sources, vtkPoints* targets)
+{
+  vtkInternals& internals = *this->Internals;
+  if (this->PoseMode != POSE_NONE && sources)
+  {
+    vtkNew<vtkLandmarkTransform> fit;
+    fit->SetSourceLandmarks(sources);
+    fit->SetTargetLandmarks(targets);
+    this->PoseMode == POSE_RIGID ? fit->SetModeToRigidBody() : fit->SetModeToSimilarity();
+    fit->Update();
+    internals.Pose->SetMatrix(fit->GetMatrix());
+  }
+  else if (this->PoseMode != POSE_NONE)
+  {
+    // ICP needs cells on its target: a cloud gets a vertex each.
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(target->GetPoints());
+    vtkNew<vtkCellArray> vertices;
+    for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
+    {
+      vertices->InsertNextCell(1, &i);
+    }
+    cloud->SetVerts(vertices);
+    vtkNew<vtkIterativeClosestPointTransform> icp;
+    icp->SetSource(fitted);
+    icp->SetTarget(internals.Matcher.IsSurface() ? target : cloud.Get());
+    this->PoseMode == POSE_RIGID ? icp->GetLandmarkTransform()->SetModeToRigidBody()
+                                 : icp->GetLandmarkTransform()->SetModeToSimilarity();
+    icp->StartByMatchingCentroidsOn();
+    icp->SetMaximumNumberOfLandmarks(PoseLandmarks);
+    icp->SetMaximumNumberOfIterations(PoseIterations);
+    icp->CheckMeanDistanceOn();
+    icp->Update();
+    internals.Pose->SetMatrix(icp->GetMatrix());
+  }
+  // The fit runs in the template's frame: the target and the landmarks' targets come back by
+  // the pose's inverse.
+  vtkNew<vtkTransform> back;
+  back->SetMatrix(internals.Pose->GetMatrix());
+  back->Inverse();
+  vtkSmartPointer<vtkPointSet> framed;
+  framed.TakeReference(target->NewInstance());
+  framed->ShallowCopy(target);
+  vtkNew<vtkPoints> framedPoints;
+  framedPoints->SetDataTypeToDouble();
+  back->TransformPoints(target->GetPoints(), framedPoints);
+  framed->SetPoints(framedPoints);
+  lep::FitSource& source = internals.Source;
+  source.LandmarkSources = sources;
+  source.LandmarkTargets = nullptr;
+  source.MaximumBindingDistance = this->MaximumBindingDistance * internals.Diagonal;
+  if (sources)
+  {
+    internals.FrameTargets->SetDataTypeToDouble();
+    internals.FrameTargets->Reset();
+    back->TransformPoints(targets, internals.FrameTargets);
+    source.LandmarkTargets = internals.FrameTargets;
+  }
+  return internals.Pipeline.Check(internals.Matcher.SetTarget(framed));
+}
+
+bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
+{
+  vtkInternals& internals = *this->Internals;
+  lep::EditPipeline& pipeline = internals.Pipeline;
+  lep::FitSource& source = internals.Source;
+  lep::SolverSettings settings = this->SharedSettings();
+  settings.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
+    ? this->NormalSmoothingRadius
+    : AutomaticSmoothingFraction * internals.Diagonal;
+  settings.Bending = this->BendingWeight;
+  const bool merge = this->MergeCoincidentPoints != 0;
+  internals.Guard.Reset(shape->GetNumberOfPoints());
+  const int rounds = this->NumberOfStages * this->RoundsPerStage + (source.LandmarkSources ? 1 : 0);
+  auto run = [&](double weight, double splinePrior) {
+    pipeline.SetProgressSpan(
+      static_cast<double>(this->NumberOfRounds) / rounds, (this->NumberOfRounds + 1.0) / rounds);
+    source.Weight = weight;
+    settings.SplinePrior = splinePrior;
+    const bool solved = pipeline.Run(rest, shape, source, settings, merge);
+    this->NumberOfRounds += solved;
+    return solved;
+  };
+  if (source.LandmarkSources)
+  {
+    source.SetMatches({}, {}, true);
+    if (!run(LandmarkFitWeight, LandmarkSplinePrior))
+    {
+      return false;
+    }
+  }
+  lep::TargetMatcher::Matches& matches = internals.Matches;
+  lep::FoldGuard& guard = internals.Guard;
+  std::vector<vtkIdType> trusted;
+  for (int stage = 0; stage < this->NumberOfStages; ++stage)
+  {
+    const double progress = this->NumberOfStages > 1 ? stage / (this->NumberOfStages - 1.0) : 1.0;
+    const double weight =
+      this->InitialMatchWeight * std::pow(this->FinalMatchWeight / this->InitialMatchWeight, progress);
+    guard.Remember(shape);
+    bool folded = false;
+    for (int round = 0; round < this->RoundsPerStage; ++round)
+    {
+      internals.Matcher.Match(shape, internals.Criteria, matches);
+      // A stage's first round chooses the trusted points, and so does a round after a fold; the
+      // others keep them, so that only the targets change and the factor holds.
+      const bool choose = round == 0 || folded;
+      if (choose)
+      {
+        trusted.clear();
+        for (vtkIdType i = 0; i < static_cast<vtkIdType>(matches.Trusted.size()); ++i)
+        {
+          if (matches.Trusted[i] && !guard.IsSetAside(i))
+          {
+            trusted.push_back(i);
+          }
+        }
+      }
+      std::vector<std::array<double, 3>> targets;
+      targets.reserve(trusted.size());
+      for (const vtkIdType i : trusted)
+      {
+        targets.push_back(matches.Targets[i]);
+      }
+      source.SetMatches(trusted, std::move(targets), choose);
+      if (!run(weight, 0.0))
+      {
+        return false;
+      }
+      folded = guard.Check(shape) > 0;
+    }
+  }
+  return true;
+}
+
+void vtkLaplacianSurfaceRegistration::WriteOutput(
+  vtkPolyData* rest, vtkPolyData* shape, vtkPolyData* output)
+{
+  vtkInternals& internals = *this->Internals;
+  // The last shape's matches: how far each point ended, and whether its match is trusted.
+  lep::TargetMatcher::Matches& matches = internals.Matches;
+  internals.Matcher.Match(shape, internals.Criteria, matches);
+  // The pose's scale: the cube root of its linear part's determinant.
+  const double scale = std::cbrt(internals.Pose->GetMatrix()->Determinant());
+  output->ShallowCopy(shape);
+  vtkNew<vtkPoints> posed;
+  posed->SetDataType(rest->GetPoints()->GetDataType());
+  internals.Pose->TransformPoints(shape->GetPoints(), posed);
+  output->SetPoints(posed);
+  if (vtkDataArray* normals = shape->GetPointData()->GetNormals())
+  {
+    vtkSmartPointer<vtkDataArray> turned;
+    turned.TakeReference(normals->NewInstance());
+    turned->SetName(normals->GetName());
+    turned->SetNumberOfComponents(3);
+    internals.Pose->TransformNormals(normals, turned);
+    output->GetPointData()->SetNormals(turned);
+  }
+  const vtkIdType n = output->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> distances;
+  distances->SetName("DistanceToTarget");
+  distances->SetNumberOfTuples(n);
+  vtkNew<vtkUnsignedCharArray> trusted;
+  trusted->SetName("MatchTrusted");
+  trusted->SetNumberOfTuples(n);
+  double squares = 0.0;
+  vtkIdType trustedCount = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double distance = scale * matches.Distances[i];
+    distances->SetValue(i, distance);
+    trusted->SetValue(i, matches.Trusted[i] && !internals.Guard.IsSetAside(i));
+    trustedCount += trusted->GetValue(i);
+    squares += distance * distance;
+  }
+  output->GetPointData()->AddArray(distances);
+  output->GetPointData()->AddArray(trusted);
+  if (this->OutputDisplacement)
+  {
+    vtkNew<vtkDoubleArray> displacement;
+    displacement->SetName("Displacement");
+    displacement->SetNumberOfComponents(3);
+    displacement->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[3], q[3];
+      rest->GetPoint(i, p);
+      posed->GetPoint(i, q);
+      displacement->SetTuple3(i, q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+    }
+    output->GetPointData()->AddArray(displacement);
+  }
+  this->RMSDistanceToTarget = n > 0 ? std::sqrt(squares / n) : 0.0;
+  this->TrustedFraction = n > 0 ? static_cast<double>(trustedCount) / n : 0.0;
+  vtkNew<vtkIntArray> rounds;
+  rounds->SetName("FitRounds");
+  rounds->InsertNextValue(this->NumberOfRounds);
+  vtkNew<vtkDoubleArray> rms;
+  rms->SetName("RMSDistanceToTarget");
+  rms->InsertNextValue(this->RMSDistanceToTarget);
+  output->GetFieldData()->AddArray(rounds);
+  output->GetFieldData()->AddArray(rms);
+}
+
+void vtkLaplacianSurfaceRegistration::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PoseMode: " << this->PoseMode << "\n";
+  os << indent << "InitialMatchWeight: " << this->InitialMatchWeight << "\n";
+  os << indent << "FinalMatchWeight: " << this->FinalMatchWeight << "\n";
+  os << indent << "NumberOfStages: " << this->NumberOfStages << "\n";
+  os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
+  os << indent << "BendingWeight: " << this->BendingWeight << "\n";
+  os << indent << "MaximumMatchDistance: " << this->MaximumMatchDistance << "\n";
+  os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
+  os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
+  os << indent << "NumberOfRounds: " << this->NumberOfRounds << "\n";
+  os << indent << "RMSDistanceToTarget: " << this->RMSDistanceToTarget << "\n";
+  os << indent << "TrustedFraction: " << this->TrustedFraction << "\n";
+  os << indent << "FitTime: " << this->FitTime << "\n";
+}
