@@ -2,6 +2,10 @@
 
 #include "EditPipeline.h"
 #include "SparseCholesky.h"
+#include "VolumeFollower.h"
+
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <initializer_list>
 
@@ -38,7 +42,9 @@ const char* EnumName(int value, std::initializer_list<const char*> names)
 
 vtkLaplacianEditFilter::vtkLaplacianEditFilter()
   : Pipeline(new lep::EditPipeline(this, [this](unsigned long code) { this->SetErrorCode(code); }))
+  , Volume(new lep::VolumeFollower)
 {
+  this->Volume->SetFilter(this);
   if (!IsCholmodAvailable())
   {
     this->Solver = SOLVER_SIMPLICIAL_LDLT;
@@ -63,6 +69,28 @@ void vtkLaplacianEditFilter::SetDragging(vtkTypeBool dragging)
   {
     this->Modified(); // the next update settles the shape the drag left
   }
+}
+
+vtkPolyData* vtkLaplacianEditFilter::VolumeBoundary(vtkUnstructuredGrid* grid)
+{
+  const std::string error = this->Volume->Update(grid, grid->GetPoints());
+  return this->Pipeline->Check(error) ? this->Volume->GetMesh().GetBoundary() : nullptr;
+}
+
+bool vtkLaplacianEditFilter::FollowBoundary(
+  vtkPoints* edited, vtkUnstructuredGrid* output, double from, double to)
+{
+  const lep::OutputEdit edit = this->Pipeline->GetEdit();
+  lep::VolumeFollower::Settings settings;
+  settings.Dragging = this->Dragging != 0;
+  settings.Backend = static_cast<le::SolverBackend>(this->Solver);
+  if (!this->Pipeline->Check(this->Volume->FollowEdit(
+        &edit, edited, settings, output, this->OutputDisplacement != 0, from, to)))
+  {
+    output->ShallowCopy(this->GetInputDataObject(0, 0));
+    return false;
+  }
+  return true;
 }
 
 lep::EditPipeline& vtkLaplacianEditFilter::GetEditPipeline()

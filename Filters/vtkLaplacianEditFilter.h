@@ -24,12 +24,17 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkPoints;
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
 namespace LaplacianEditing
 {
 namespace Pipeline
 {
 class EditPipeline;
 struct SolverSettings;
+class VolumeFollower;
 }
 }
 
@@ -332,6 +337,18 @@ protected:
    */
   LaplacianEditing::Pipeline::SolverSettings SharedSettings() const;
 
+  /**
+   * The volume path, the same for every filter that takes a volume mesh (a vtkUnstructuredGrid
+   * of linear 3D cells) and edits it through its boundary: VolumeBoundary gives the boundary
+   * surface to edit (null, with the error reported, if the grid has none); after the pipeline
+   * solved its edit, whose points are written in `edited`, FollowBoundary moves the interior
+   * without inverting a cell and writes `output`, its settle reported as the filter's progress
+   * from `from` to `to` (false, with the error reported and the input passed through, if it
+   * cannot).
+   */
+  vtkPolyData* VolumeBoundary(vtkUnstructuredGrid* grid);
+  bool FollowBoundary(vtkPoints* edited, vtkUnstructuredGrid* output, double from, double to);
+
   vtkTypeBool MergeCoincidentPoints = 1;
   int LaplacianWeights = WEIGHTS_UNIFORM;
   int OperatorOrder = 1;
@@ -357,6 +374,7 @@ private:
   void operator=(const vtkLaplacianEditFilter&) = delete;
 
   std::unique_ptr<LaplacianEditing::Pipeline::EditPipeline> Pipeline;
+  std::unique_ptr<LaplacianEditing::Pipeline::VolumeFollower> Volume;
 };
 
 #endif

@@ -2,7 +2,6 @@
 
 #include "EditPipeline.h"
 #include "LandmarkSource.h"
-#include "VolumeFollower.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
@@ -64,8 +63,7 @@ struct vtkLaplacianLandmarkWarp::vtkInternals
   vtkNew<vtkPoints> EditedTargets;
   // The last update's targets.
   vtkNew<vtkDoubleArray> WarpedTargets;
-  // A volume mesh's: its interior, and its boundary surface as warped.
-  lep::VolumeFollower Volume;
+  // A volume mesh's boundary surface as warped.
   vtkNew<vtkPolyData> WarpedBoundary;
 };
 
@@ -79,7 +77,6 @@ vtkLaplacianLandmarkWarp::vtkLaplacianLandmarkWarp()
   this->Convergence = 1e-4;
   this->SetNumberOfInputPorts(3);
   this->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
-  this->Internals->Volume.SetFilter(this);
   this->Internals->EditedTargets->SetDataTypeToDouble();
   this->Internals->WarpedTargets->SetNumberOfComponents(3);
 }
@@ -201,7 +198,7 @@ int vtkLaplacianLandmarkWarp::RequestData(
   }
   // A volume mesh warps through its boundary surface.
   auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
-  vtkPolyData* surface = grid ? this->BoundaryOf(grid) : vtkPolyData::SafeDownCast(input);
+  vtkPolyData* surface = grid ? this->VolumeBoundary(grid) : vtkPolyData::SafeDownCast(input);
   vtkPolyData* warped = grid ? this->Internals->WarpedBoundary.Get() : vtkPolyData::SafeDownCast(output);
   vtkPoints* sources = nullptr;
   vtkPoints* targets = nullptr;
@@ -226,36 +223,13 @@ int vtkLaplacianLandmarkWarp::RequestData(
         surface, warped, source, this->Settings(diagonal), this->MergeCoincidentPoints != 0, outputs))
   {
     this->ReportFit(warped, targets);
-    if (grid && this->FollowBoundary(warped, vtkUnstructuredGrid::SafeDownCast(output)))
+    if (grid &&
+      this->FollowBoundary(warped->GetPoints(), vtkUnstructuredGrid::SafeDownCast(output), 0.9, 1.0))
     {
       output->GetFieldData()->AddArray(warped->GetFieldData()->GetArray("LandmarkDistance"));
     }
   }
   return 1;
-}
-
-vtkPolyData* vtkLaplacianLandmarkWarp::BoundaryOf(vtkUnstructuredGrid* grid)
-{
-  lep::VolumeFollower& volume = this->Internals->Volume;
-  const std::string error = volume.Update(grid, grid->GetPoints());
-  return this->Internals->Pipeline.Check(error) ? volume.GetMesh().GetBoundary() : nullptr;
-}
-
-bool vtkLaplacianLandmarkWarp::FollowBoundary(vtkPolyData* warpedBoundary, vtkUnstructuredGrid* output)
-{
-  lep::EditPipeline& pipeline = this->Internals->Pipeline;
-  lep::VolumeFollower& volume = this->Internals->Volume;
-  const lep::OutputEdit edit = pipeline.GetEdit();
-  lep::VolumeFollower::Settings settings;
-  settings.Dragging = this->Dragging != 0;
-  settings.Backend = static_cast<le::SolverBackend>(this->Solver);
-  if (!pipeline.Check(volume.FollowEdit(&edit, warpedBoundary->GetPoints(), settings, output,
-        this->OutputDisplacement != 0, 0.9, 1.0)))
-  {
-    output->ShallowCopy(this->GetInputDataObject(0, 0));
-    return false;
-  }
-  return true;
 }
 
 bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& targets)

@@ -55,7 +55,6 @@ class vtkDoubleArray;
 class vtkPoints;
 class vtkPointSet;
 class vtkPolyData;
-class vtkUnstructuredGrid;
 namespace LaplacianEditing
 {
 namespace Pipeline
@@ -82,6 +81,7 @@ public:
    */
   virtual void SetSourceLandmarks(vtkPoints* sources);
   vtkGetObjectMacro(SourceLandmarks, vtkPoints);
+  /** The targets, one per source landmark. */
   virtual void SetTargetLandmarks(vtkPoints* targets);
   vtkGetObjectMacro(TargetLandmarks, vtkPoints);
 
@@ -92,6 +92,7 @@ public:
    * "Target" by default, holds the targets.
    */
   void SetLandmarksConnection(vtkAlgorithmOutput* landmarks) { this->SetInputConnection(1, landmarks); }
+  /** The landmarks' point set on input port 1, without a pipeline. */
   void SetLandmarksData(vtkDataObject* landmarks);
 
   /**
@@ -102,6 +103,7 @@ public:
    * otherwise they are paired in order, the same number on each side.
    */
   void SetTargetLandmarksConnection(vtkAlgorithmOutput* targets) { this->SetInputConnection(2, targets); }
+  /** The targets' point set on input port 2, without a pipeline. */
   void SetTargetLandmarksData(vtkDataObject* targets);
 
   /**
@@ -121,6 +123,7 @@ public:
    */
   vtkSetClampMacro(BindingTolerance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(BindingTolerance, double);
+  /** Farther than this fraction of the diagonal from the surface, a landmark is an error. */
   vtkSetClampMacro(MaximumBindingDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumBindingDistance, double);
 
@@ -134,6 +137,7 @@ public:
   vtkSetMacro(ExactFit, vtkTypeBool);
   vtkGetMacro(ExactFit, vtkTypeBool);
   vtkBooleanMacro(ExactFit, vtkTypeBool);
+  /** A soft fit's pull on each landmark, relative to the surface's stiffness. */
   vtkSetClampMacro(LandmarkWeight, double, 1e-6, 1e6);
   vtkGetMacro(LandmarkWeight, double);
   ///@}
@@ -206,10 +210,6 @@ private:
   LaplacianEditing::Pipeline::SolverSettings Settings(double diagonal) const;
   // After a solve: the warning for an exact fit that missed, and the landmarks' misses.
   void ReportFit(vtkPolyData* output, vtkPoints* targets);
-  // A volume mesh's boundary surface, or null with the error reported.
-  vtkPolyData* BoundaryOf(vtkUnstructuredGrid* grid);
-  // The interior follows the boundary's warp; false, with the error reported, if it cannot.
-  bool FollowBoundary(vtkPolyData* warpedBoundary, vtkUnstructuredGrid* output);
 
   vtkPoints* SourceLandmarks = nullptr;
   vtkPoints* TargetLandmarks = nullptr;
