@@ -7,6 +7,7 @@
 #include "TargetMatcher.h"
 
 #include "vtkCellArray.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
@@ -25,6 +26,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTransform.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <cmath>
 
@@ -40,6 +42,8 @@ constexpr double LandmarkFitWeight = 100.0;
 constexpr double LandmarkSplinePrior = 1.0;
 // The explicit mode's automatic support, a fraction of the diagonal (as the warp's).
 constexpr double AutomaticSmoothingFraction = 0.05;
+// A volume's interior follows the fit in the last share of the progress.
+constexpr double VolumeProgress = 0.9;
 // VTK's ICP: enough sampled points and iterations for a pose, not a fit.
 constexpr int PoseLandmarks = 2000;
 constexpr int PoseIterations = 100;
@@ -64,6 +68,8 @@ struct vtkLaplacianSurfaceRegistration::vtkInternals
   vtkNew<vtkPoints> FrameTargets;
   vtkNew<vtkPoints> LandmarkTargets;
   double Diagonal = 1.0;
+  // The share of the progress the rounds report in (the rest is a volume's).
+  double RoundsShare = 1.0;
 };
 
 vtkLaplacianSurfaceRegistration::vtkLaplacianSurfaceRegistration()
@@ -81,16 +87,6 @@ vtkLaplacianSurfaceRegistration::vtkLaplacianSurfaceRegistration()
 }
 
 vtkLaplacianSurfaceRegistration::~vtkLaplacianSurfaceRegistration() = default;
-
-vtkPolyData* vtkLaplacianSurfaceRegistration::GetOutput()
-{
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(0));
-}
-
-vtkPolyData* vtkLaplacianSurfaceRegistration::GetOutput(int port)
-{
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(port));
-}
 
 void vtkLaplacianSurfaceRegistration::SetTargetData(vtkDataObject* target)
 {
@@ -112,6 +108,7 @@ int vtkLaplacianSurfaceRegistration::FillInputPortInformation(int port, vtkInfor
   if (port == 0)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
     return 1;
   }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
@@ -119,26 +116,14 @@ int vtkLaplacianSurfaceRegistration::FillInputPortInformation(int port, vtkInfor
   return 1;
 }
 
-int vtkLaplacianSurfaceRegistration::FillOutputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkPolyData");
-  return 1;
-}
-
-int vtkLaplacianSurfaceRegistration::RequestDataObject(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector*)
-{
-  return 1; // the output is a vtkPolyData, as the port says
-}
-
 int vtkLaplacianSurfaceRegistration::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   const LaplacianEditing::Stopwatch watch;
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkPointSet* target = vtkPointSet::GetData(inputVector[1]);
   vtkPointSet* landmarks = vtkPointSet::GetData(inputVector[2]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkPointSet* output = vtkPointSet::GetData(outputVector);
   vtkInternals& internals = *this->Internals;
   lep::EditPipeline& pipeline = internals.Pipeline;
   pipeline.BeginUpdate();
@@ -157,25 +142,52 @@ int vtkLaplacianSurfaceRegistration::RequestData(
       "one process)");
     return 1;
   }
+  // A volume mesh is fitted through its boundary surface, its interior following.
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  vtkPolyData* surface = grid ? this->VolumeBoundary(grid) : vtkPolyData::SafeDownCast(input);
   vtkPoints* sources = nullptr;
   vtkPoints* targets = nullptr;
-  if (!pipeline.Check(lep::SurfaceAdapter::CheckSurface(input)) ||
+  if (!surface || !pipeline.Check(lep::SurfaceAdapter::CheckSurface(surface)) ||
     !pipeline.Check(internals.Matcher.SetTarget(target)) ||
     !this->FindLandmarks(landmarks, sources, targets))
   {
     return 1;
   }
-  internals.Diagonal = input->GetLength();
+  internals.Diagonal = surface->GetLength();
+  internals.Source.FollowUnreferenced = !grid; // a grid's interior follows its own way
+  internals.RoundsShare = grid ? VolumeProgress : 1.0;
   lep::TargetMatcher::Criteria& criteria = internals.Criteria;
   criteria.MaximumDistance = this->MaximumMatchDistance * internals.Diagonal;
   criteria.MinimumCosine = std::cos(vtkMath::RadiansFromDegrees(this->MaximumNormalAngle));
   vtkNew<vtkPolyData> shape;
-  shape->ShallowCopy(input);
+  shape->ShallowCopy(surface);
   // An aborted fit ends at its last round's shape; a failed one passes the template through.
-  const bool fitted = this->FindPose(shape, target, sources, targets) && this->Fit(input, shape);
+  const bool fitted = this->FindPose(shape, target, sources, targets) && this->Fit(surface, shape);
   if (!fitted && (this->GetErrorCode() != vtkErrorCode::NoError || this->NumberOfRounds == 0))
   {
     return 1;
+  }
+  if (this->LandOnTarget)
+  {
+    // The fit's last shape onto its trusted matches, where no triangle turns over.
+    lep::TargetMatcher::Matches& matches = internals.Matches;
+    internals.Matcher.Match(shape, internals.Criteria, matches);
+    internals.Guard.Land(shape, matches.Landings, matches.Trusted);
+  }
+  if (grid)
+  {
+    // The interior follows in the template's frame; the pose is applied after.
+    vtkNew<vtkUnstructuredGrid> followed;
+    followed->ShallowCopy(grid);
+    if (!this->FollowBoundary(shape->GetPoints(), followed, VolumeProgress, 1.0))
+    {
+      return 1;
+    }
+    output->ShallowCopy(followed);
+  }
+  else
+  {
+    output->ShallowCopy(shape);
   }
   this->WriteOutput(input, shape, output);
   this->FitTime = watch.Seconds();
@@ -250,8 +262,13 @@ bool vtkLaplacianSurfaceRegistration::FindPose(
       vertices->InsertNextCell(1, &i);
     }
     cloud->SetVerts(vertices);
+    // ICP samples the source's points: only those the surface uses (not a volume's interior).
+    vtkNew<vtkCleanPolyData> used;
+    used->SetInputData(fitted);
+    used->PointMergingOff();
+    used->Update();
     vtkNew<vtkIterativeClosestPointTransform> icp;
-    icp->SetSource(fitted);
+    icp->SetSource(used->GetOutput());
     icp->SetTarget(internals.Matcher.IsSurface() ? target : cloud.Get());
     this->PoseMode == POSE_RIGID ? icp->GetLandmarkTransform()->SetModeToRigidBody()
                                  : icp->GetLandmarkTransform()->SetModeToSimilarity();
@@ -301,9 +318,9 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
   const bool merge = this->MergeCoincidentPoints != 0;
   internals.Guard.Reset(shape->GetNumberOfPoints());
   const int rounds = this->NumberOfStages * this->RoundsPerStage + (source.LandmarkSources ? 1 : 0);
+  const double share = internals.RoundsShare / rounds;
   auto run = [&](double weight, double splinePrior) {
-    pipeline.SetProgressSpan(
-      static_cast<double>(this->NumberOfRounds) / rounds, (this->NumberOfRounds + 1.0) / rounds);
+    pipeline.SetProgressSpan(share * this->NumberOfRounds, share * (this->NumberOfRounds + 1.0));
     source.Weight = weight;
     settings.SplinePrior = splinePrior;
     const bool solved = pipeline.Run(rest, shape, source, settings, merge);
@@ -318,6 +335,9 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
       return false;
     }
   }
+  // The landmarks' fit (or the pose) put the template near the target: a cloud's normals take
+  // their sign from it.
+  internals.Matcher.OrientCloud(shape);
   lep::TargetMatcher::Matches& matches = internals.Matches;
   lep::FoldGuard& guard = internals.Guard;
   std::vector<vtkIdType> trusted;
@@ -363,7 +383,7 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
 }
 
 void vtkLaplacianSurfaceRegistration::WriteOutput(
-  vtkPolyData* rest, vtkPolyData* shape, vtkPolyData* output)
+  vtkPointSet* rest, vtkPolyData* shape, vtkPointSet* output)
 {
   vtkInternals& internals = *this->Internals;
   // The last shape's matches: how far each point ended, and whether its match is trusted.
@@ -371,12 +391,11 @@ void vtkLaplacianSurfaceRegistration::WriteOutput(
   internals.Matcher.Match(shape, internals.Criteria, matches);
   // The pose's scale: the cube root of its linear part's determinant.
   const double scale = std::cbrt(internals.Pose->GetMatrix()->Determinant());
-  output->ShallowCopy(shape);
   vtkNew<vtkPoints> posed;
   posed->SetDataType(rest->GetPoints()->GetDataType());
-  internals.Pose->TransformPoints(shape->GetPoints(), posed);
+  internals.Pose->TransformPoints(output->GetPoints(), posed);
   output->SetPoints(posed);
-  if (vtkDataArray* normals = shape->GetPointData()->GetNormals())
+  if (vtkDataArray* normals = output->GetPointData()->GetNormals())
   {
     vtkSmartPointer<vtkDataArray> turned;
     turned.TakeReference(normals->NewInstance());
@@ -392,15 +411,29 @@ void vtkLaplacianSurfaceRegistration::WriteOutput(
   vtkNew<vtkUnsignedCharArray> trusted;
   trusted->SetName("MatchTrusted");
   trusted->SetNumberOfTuples(n);
+  // The surface's points: a volume's interior and points no polygon uses are not fitted.
+  std::vector<char> fitted(n, 0);
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  const vtkIdType firstPolygon = shape->GetNumberOfVerts() + shape->GetNumberOfLines();
+  for (vtkIdType c = 0; c < shape->GetNumberOfPolys(); ++c)
+  {
+    shape->GetCellPoints(firstPolygon + c, count, ids);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      fitted[ids[k]] = 1;
+    }
+  }
   double squares = 0.0;
-  vtkIdType trustedCount = 0;
+  vtkIdType trustedCount = 0, fittedCount = 0;
   for (vtkIdType i = 0; i < n; ++i)
   {
     const double distance = scale * matches.Distances[i];
     distances->SetValue(i, distance);
-    trusted->SetValue(i, matches.Trusted[i] && !internals.Guard.IsSetAside(i));
+    trusted->SetValue(i, fitted[i] && matches.Trusted[i] && !internals.Guard.IsSetAside(i));
     trustedCount += trusted->GetValue(i);
-    squares += distance * distance;
+    fittedCount += fitted[i];
+    squares += fitted[i] ? distance * distance : 0.0;
   }
   output->GetPointData()->AddArray(distances);
   output->GetPointData()->AddArray(trusted);
@@ -419,8 +452,8 @@ void vtkLaplacianSurfaceRegistration::WriteOutput(
     }
     output->GetPointData()->AddArray(displacement);
   }
-  this->RMSDistanceToTarget = n > 0 ? std::sqrt(squares / n) : 0.0;
-  this->TrustedFraction = n > 0 ? static_cast<double>(trustedCount) / n : 0.0;
+  this->RMSDistanceToTarget = fittedCount > 0 ? std::sqrt(squares / fittedCount) : 0.0;
+  this->TrustedFraction = fittedCount > 0 ? static_cast<double>(trustedCount) / fittedCount : 0.0;
   vtkNew<vtkIntArray> rounds;
   rounds->SetName("FitRounds");
   rounds->InsertNextValue(this->NumberOfRounds);
@@ -443,6 +476,7 @@ void vtkLaplacianSurfaceRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumMatchDistance: " << this->MaximumMatchDistance << "\n";
   os << indent << "MaximumNormalAngle: " << this->MaximumNormalAngle << "\n";
   os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
+  os << indent << "LandOnTarget: " << (this->LandOnTarget ? "On" : "Off") << "\n";
   os << indent << "NumberOfRounds: " << this->NumberOfRounds << "\n";
   os << indent << "RMSDistanceToTarget: " << this->RMSDistanceToTarget << "\n";
   os << indent << "TrustedFraction: " << this->TrustedFraction << "\n";

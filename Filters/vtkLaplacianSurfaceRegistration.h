@@ -5,9 +5,12 @@
  *
  * vtkLaplacianSurfaceRegistration moves a triangle template (input port 0) onto a target (input
  * port 1: a triangle surface, or points alone, a point cloud), so that each template vertex
- * lands on the target's corresponding place. Fitted templates share their vertices, so every
- * specimen fitted from one template is in dense correspondence with the others: its vertices
- * are pseudo-landmarks, and shape statistics and mean shapes come from them directly.
+ * lands on the target's corresponding place. A volume template (a vtkUnstructuredGrid of linear
+ * 3D cells) is fitted through its boundary surface, and its interior follows without inverting
+ * a cell, as in vtkLaplacianVolumeDeformationFilter (with its ScaledJacobian and EditFailed
+ * cell arrays). Fitted templates share their vertices, so every specimen fitted from one
+ * template is in dense correspondence with the others: its vertices are pseudo-landmarks, and
+ * shape statistics and mean shapes come from them directly.
  *
  * The method is non-rigid iterative closest points (Amberg et al. 2007) on the project's edit
  * pipeline:
@@ -19,24 +22,26 @@
  *   details, and the pose is applied to the result;
  * - where landmarks are given, the landmark warp's fit (vtkLaplacianLandmarkWarp) to them;
  * - then stages of rounds: each template vertex is matched to the foot of its perpendicular on
- *   the target's tangent plane at its closest point (point-to-plane), the matches that are
- *   unlikely to be the same place are set aside (far: beyond MaximumMatchDistance; facing
- *   away: normals more than MaximumNormalAngle apart; beyond the rim of a hole), and
- *   the template is solved as-rigid-as-possible with the trusted vertices pulled to their matches. The pull grows from
- *   InitialMatchWeight to FinalMatchWeight over NumberOfStages (stiff first, so that the whole
- *   template turns and bends before its details are drawn in), RoundsPerStage rounds each; a
- *   round that keeps the trusted set changes only the right-hand side and reuses the factor.
+ *   the target's tangent plane at its closest point (point-to-plane); matches unlikely to be the
+ *   same place are set aside (far: beyond MaximumMatchDistance; facing away: normals more than
+ *   MaximumNormalAngle apart; beyond the rim of a hole); and the template is solved as rigidly
+ *   as possible with the trusted vertices pulled to their matches. The pull grows from
+ *   InitialMatchWeight to FinalMatchWeight over NumberOfStages (stiff first, so that whole parts
+ *   turn and bend before their details are drawn in), RoundsPerStage rounds each; a round that
+ *   keeps the trusted set changes only the right-hand side and reuses the factor. Vertices whose
+ *   triangles turn over within a stage are set aside for the rest of the fit;
+ * - last (LandOnTarget), each trusted vertex moves onto the target where no triangle turns over.
  *
  * A target's normals need not point the same way as the template's; a cloud's are estimated
  * from each point's 12 nearest points. Without landmarks the fit relies on ICP's pose: a target
  * turned far from the template's pose needs landmarks.
  *
- * Output: the template (a vtkPolyData) with its points on the target, every point and cell
- * array passed through, normals refreshed, and the point arrays Displacement (output minus
- * input), DistanceToTarget (each point's distance to the target) and MatchTrusted (1 where the
- * last round trusted the point's match, 0 where it was set aside), and the field arrays
- * FitRounds, RMSDistanceToTarget and FitSeconds. Progress is reported across the rounds, and
- * an abort ends the fit at its last round's shape. On bad input the filter reports an error,
+ * Output: the template (a vtkPolyData, or the vtkUnstructuredGrid) with its points on the
+ * target, every point and cell array passed through, normals refreshed, and the point arrays
+ * Displacement (output minus input), DistanceToTarget (each point's distance to the target) and
+ * MatchTrusted (1 where the point's last match is trusted, 0 where it is set aside), and the
+ * field arrays FitRounds, RMSDistanceToTarget and FitSeconds. Progress is reported across the
+ * rounds, and an abort ends the fit at its last round's shape. On bad input the filter reports an error,
  * passes the template through and sets GetErrorCode() to vtkErrorCode::UserError.
  * Documentation/template-fitting.md has the guide and the measurements.
  *
@@ -70,10 +75,6 @@ public:
     POSE_SIMILARITY = 2
   };
 
-  /** The output, the fitted template. */
-  vtkPolyData* GetOutput();
-  vtkPolyData* GetOutput(int port);
-
   /**
    * @name Inputs
    * Port 0 is the template (SetInputConnection), port 1 the target, port 2 (optional) the
@@ -82,9 +83,13 @@ public:
    * name) names another) holds their places on the target.
    */
   ///@{
+  /** The target on input port 1: a triangle surface, or points alone (a point cloud). */
   void SetTargetConnection(vtkAlgorithmOutput* target) { this->SetInputConnection(1, target); }
+  /** The target on input port 1, without a pipeline. */
   void SetTargetData(vtkDataObject* target);
+  /** The landmarks on input port 2: points on the template, their places in "Target". */
   void SetLandmarksConnection(vtkAlgorithmOutput* landmarks) { this->SetInputConnection(2, landmarks); }
+  /** The landmarks on input port 2, without a pipeline. */
   void SetLandmarksData(vtkDataObject* landmarks);
   ///@}
 
@@ -117,10 +122,13 @@ public:
    */
   vtkSetClampMacro(InitialMatchWeight, double, 1e-6, 1e6);
   vtkGetMacro(InitialMatchWeight, double);
+  /** The pull of the matches at the last stage (0.03); see InitialMatchWeight. */
   vtkSetClampMacro(FinalMatchWeight, double, 1e-6, 1e6);
   vtkGetMacro(FinalMatchWeight, double);
+  /** The stages from the initial to the final pull (6). */
   vtkSetClampMacro(NumberOfStages, int, 1, 100);
   vtkGetMacro(NumberOfStages, int);
+  /** The rounds of matching and solving in each stage (4). */
   vtkSetClampMacro(RoundsPerStage, int, 1, 100);
   vtkGetMacro(RoundsPerStage, int);
   /**
@@ -129,6 +137,16 @@ public:
    */
   vtkSetClampMacro(BendingWeight, double, 0.0, 1e6);
   vtkGetMacro(BendingWeight, double);
+  /**
+   * After the stages, move each point whose match is trusted onto it (along the target's
+   * normal), except where a triangle would turn over (default on). The stages end where the
+   * template's stiffness balances the pull, short of the target where the specimen is not a
+   * bent copy of the template (stretched, sheared); landing puts the surface on the target with
+   * the stages' correspondence. Off, the output is the stages' as-rigid-as-possible shape.
+   */
+  vtkSetMacro(LandOnTarget, vtkTypeBool);
+  vtkGetMacro(LandOnTarget, vtkTypeBool);
+  vtkBooleanMacro(LandOnTarget, vtkTypeBool);
   ///@}
 
   /**
@@ -141,6 +159,7 @@ public:
    */
   vtkSetClampMacro(MaximumMatchDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumMatchDistance, double);
+  /** Normals farther apart than this many degrees (60) set a match aside. */
   vtkSetClampMacro(MaximumNormalAngle, double, 0.0, 180.0);
   vtkGetMacro(MaximumNormalAngle, double);
   /**
@@ -152,9 +171,9 @@ public:
 
   /**
    * @name Results of the last update
-   * The rounds run, the root-mean-square distance of the output's points to the target (input
-   * units), the share of the template's points whose match the last round trusted, and the
-   * seconds the fit took.
+   * The rounds run, the root-mean-square distance of the output's surface points to the target
+   * (input units; a volume's interior is not counted), the share of them whose match is trusted
+   * at the end, and the seconds the fit took.
    */
   ///@{
   vtkGetMacro(NumberOfRounds, int);
@@ -168,8 +187,6 @@ protected:
   ~vtkLaplacianSurfaceRegistration() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
@@ -185,8 +202,8 @@ private:
   // The stages' rounds on `shape` (the template in the fit's frame, updated in place); false if
   // a solve failed (reported) or the filter was aborted.
   bool Fit(vtkPolyData* rest, vtkPolyData* shape);
-  // The output: the fitted shape posed, with its arrays.
-  void WriteOutput(vtkPolyData* rest, vtkPolyData* shape, vtkPolyData* output);
+  // The output (the fitted shape, or the grid that followed it) posed, with its arrays.
+  void WriteOutput(vtkPointSet* rest, vtkPolyData* shape, vtkPointSet* output);
 
   int PoseMode = POSE_SIMILARITY;
   double InitialMatchWeight = 0.001;
@@ -194,6 +211,7 @@ private:
   int NumberOfStages = 6;
   int RoundsPerStage = 4;
   double BendingWeight = 10.0;
+  vtkTypeBool LandOnTarget = 1;
   double MaximumMatchDistance = 0.1;
   double MaximumNormalAngle = 60.0;
   double MaximumBindingDistance = 0.1;

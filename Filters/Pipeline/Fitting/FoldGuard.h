@@ -3,7 +3,8 @@
 // the template: triangles turn over. The guard remembers each triangle's normal at the start of
 // a stage, and after each round sets aside for good the vertices of the triangles that turned
 // over since (by more than a right angle, which no stage's motion does): the template's own
-// stiffness carries them from then on.
+// stiffness carries them from then on. It also lands a fitted shape on its matches without a
+// fold: each point moves to its match unless one of its triangles would turn over.
 #ifndef LaplacianEditing_Pipeline_FoldGuard_h
 #define LaplacianEditing_Pipeline_FoldGuard_h
 
@@ -29,6 +30,11 @@ public:
   /// vertices it set aside anew.
   int Check(vtkPolyData* shape);
   bool IsSetAside(vtkIdType point) const { return this->SetAside[point] != 0; }
+  /// Moves each point of `shape` that `allowed` marks (and the guard has not set aside) to its
+  /// target, in new points, except the corners of triangles that would turn over, tilt by more
+  /// than 30 degrees or collapse, which keep their place; returns how many points moved.
+  int Land(vtkPolyData* shape, const std::vector<std::array<double, 3>>& targets,
+    const std::vector<char>& allowed) const;
   int GetNumberOfSetAside() const;
 
 private:

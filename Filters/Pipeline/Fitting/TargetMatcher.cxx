@@ -175,6 +175,7 @@ std::string TargetMatcher::SetTarget(vtkPointSet* target)
   }
   // Points alone: a cloud (a surface's vertices without its triangles count as one).
   this->Cloud = target;
+  this->CloudOriented = false;
   this->Points->SetDataSet(target);
   this->Points->BuildLocator();
   this->Normals = CloudNormals(target, this->Points);
@@ -239,6 +240,38 @@ double TargetMatcher::DistanceTo(const double point[3]) const
   return std::sqrt(vtkMath::Distance2BetweenPoints(point, closest));
 }
 
+void TargetMatcher::OrientCloud(vtkPolyData* shape)
+{
+  if (this->Surface)
+  {
+    return;
+  }
+  vtkNew<vtkPolyDataNormals> shapeNormals;
+  shapeNormals->SetInputData(shape);
+  shapeNormals->SplittingOff();
+  shapeNormals->ConsistencyOff();
+  shapeNormals->AutoOrientNormalsOff();
+  shapeNormals->Update();
+  vtkPolyData* normalized = shapeNormals->GetOutput();
+  vtkDataArray* own = normalized->GetPointData()->GetNormals();
+  vtkNew<vtkStaticPointLocator> nearest;
+  nearest->SetDataSet(normalized);
+  nearest->BuildLocator();
+  for (vtkIdType i = 0; i < this->Cloud->GetNumberOfPoints(); ++i)
+  {
+    double p[3], normal[3], mine[3];
+    this->Cloud->GetPoint(i, p);
+    this->Normals->GetTuple(i, normal);
+    own->GetTuple(nearest->FindClosestPoint(p), mine);
+    if (vtkMath::Dot(normal, mine) < 0.0)
+    {
+      vtkMath::MultiplyScalar(normal, -1.0);
+      this->Normals->SetTuple(i, normal);
+    }
+  }
+  this->CloudOriented = true;
+}
+
 void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches) const
 {
   vtkNew<vtkPolyDataNormals> shapeNormals;
@@ -250,6 +283,7 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
   vtkDataArray* own = shapeNormals->GetOutput()->GetPointData()->GetNormals();
   const vtkIdType n = shape->GetNumberOfPoints();
   matches.Targets.resize(n);
+  matches.Landings.resize(n);
   matches.Distances.resize(n);
   matches.Trusted.assign(n, 1);
   std::vector<double> cosines(n, 1.0);
@@ -267,6 +301,7 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
     for (int k = 0; k < 3; ++k)
     {
       matches.Targets[i][k] = p[k] + along * normal[k];
+      matches.Landings[i][k] = this->Surface ? closest[k] : matches.Targets[i][k];
     }
     matches.Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(p, closest));
     cosines[i] = vtkMath::Dot(normal, mine);
@@ -278,7 +313,8 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
   const double sign = opposed > facing ? -1.0 : 1.0;
   for (vtkIdType i = 0; i < n; ++i)
   {
-    const double cosine = this->Surface ? sign * cosines[i] : std::abs(cosines[i]);
+    const double cosine = this->Surface ? sign * cosines[i]
+                                        : (this->CloudOriented ? cosines[i] : std::abs(cosines[i]));
     matches.Trusted[i] = matches.Distances[i] <= criteria.MaximumDistance && cosine >= criteria.MinimumCosine && !rims[i];
   }
 }

@@ -6,7 +6,8 @@
 // match would hold it back.
 //
 // A match is trusted only where it is likely the same place of the shape: near (within
-// MaximumDistance), facing the same way (normals within an angle; for a cloud, either sign),
+// MaximumDistance), facing the same way (normals within an angle; for a cloud, either sign
+// until OrientCloud),
 // and, on a surface, not beyond the rim of a hole or of the target's border, where the closest
 // point of a region the target lacks lands (on the rim's edge, off the perpendicular). A bound
 // relative to the median distance, common in rigid ICP, sets aside for good the parts still far
@@ -46,10 +47,13 @@ public:
     double MinimumCosine = 0.5;
   };
 
-  /// Each template point's match, the distance to it and whether it is trusted.
+  /// Each template point's match (the foot on the tangent plane), where it lands on the target
+  /// (a surface's closest point; on a cloud, the foot, between its points), the distance to the
+  /// closest point and whether the match is trusted.
   struct Matches
   {
     std::vector<std::array<double, 3>> Targets;
+    std::vector<std::array<double, 3>> Landings;
     std::vector<double> Distances;
     std::vector<char> Trusted;
   };
@@ -59,6 +63,11 @@ public:
   /// message, empty on success.
   std::string SetTarget(vtkPointSet* target);
   bool IsSurface() const { return this->Surface != nullptr; }
+
+  /// A cloud's normals turned to agree with the nearest point's of `shape` (a template already
+  /// near the cloud), so that matches on the far side of thin parts face away; afterwards the
+  /// cloud's normals count with their sign. Nothing for a surface.
+  void OrientCloud(vtkPolyData* shape);
 
   /// The matches of `shape`'s points (a surface whose point normals are computed here).
   void Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches) const;
@@ -78,6 +87,7 @@ private:
   vtkSmartPointer<vtkDataArray> Normals;     // per point (a cloud's estimated)
   vtkSmartPointer<vtkDataArray> FaceNormals; // per triangle of a surface
   std::vector<char> RimCells;
+  bool CloudOriented = false;
   double OnSurface = 0.0; // nearer the surface than this, a point is on it
 };
 }

@@ -3,7 +3,7 @@
 #include "SurfaceAdapter.h"
 #include "SurfaceMesh.h"
 
-#include <numeric>
+#include <algorithm>
 
 namespace LaplacianEditing
 {
@@ -64,13 +64,20 @@ std::string FitSource::ChooseRegion(
     this->BuiltFor = this->Version;
     ++this->PointsVersion;
   }
+  // Every component: a corner of each triangle seeds its own.
   region.Request.Selection = RegionRequest::Kind::Components;
-  region.Request.Seeds.resize(mesh.GetNumberOfVertices());
-  std::iota(region.Request.Seeds.begin(), region.Request.Seeds.end(), 0);
+  std::vector<int>& seeds = region.Request.Seeds;
+  seeds.clear();
+  for (const auto& triangle : mesh.GetTriangles())
+  {
+    seeds.push_back(triangle[0]);
+  }
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
   region.Points = this->Points;
   region.PointsVersion = this->PointsVersion;
   region.PointWeight = this->Weight;
-  region.FollowUnreferenced = true;
+  region.FollowUnreferenced = this->FollowUnreferenced;
   return {};
 }
 

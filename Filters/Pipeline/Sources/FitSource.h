@@ -34,6 +34,8 @@ public:
   double MaximumBindingDistance = 0.0;
   /// The pull of every point, relative to the template's stiffness.
   double Weight = 1.0;
+  /// Points that no polygon uses move with their nearest fitted point (RegionChoice).
+  bool FollowUnreferenced = true;
 
   std::string ChooseRegion(vtkPolyData* rest, const SurfaceAdapter& surface, RegionChoice& region) override;
   std::string ChooseMotions(
