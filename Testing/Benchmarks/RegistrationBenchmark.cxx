@@ -102,8 +102,8 @@ void RunCase(const KnownWarps::Warp& warp, const Case& fit)
     registration->SetLandmarksData(landmarks);
     registration->Update();
     const double seconds = SecondsSince(start);
-    Print(warp.Name, fit, "surface_registration", Measure(registration->GetOutput(), fit, diagonal),
-      seconds);
+    Print(warp.Name, fit, "surface_registration",
+      Measure(vtkPolyData::SafeDownCast(registration->GetOutput()), fit, diagonal), seconds);
   }
 }
 }

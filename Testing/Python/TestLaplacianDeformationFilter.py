@@ -121,20 +121,22 @@ class TestLaplacianDeformationFilter(unittest.TestCase):
                 self.assertEqual(out.GetNumberOfCells(), mesh.GetNumberOfCells())
 
     def test_every_setter_documents_itself(self):
-        """help() on each public setter says more than its signature."""
-        deform = laplacianediting.vtkLaplacianDeformationFilter
-        own = [name for name in dir(deform) if name.startswith("Set")
-               and name not in dir(vtkPointSetAlgorithm)]
-        self.assertGreater(len(own), 40)
+        """help() on each public setter of each edit filter says more than its signature."""
         undocumented = []
-        for name in own:
-            text = getattr(deform, name).__doc__ or ""
-            # The wrapper writes signature lines ("Name(self...) -> ..." and "C++: ..."), then
-            # the header's comment.
-            prose = [line for line in text.splitlines() if line.strip() and not line.startswith(
-                (name + "(", "C++:", "    ")) and "->" not in line]
-            if not prose:
-                undocumented.append(name)
+        for filter_class in (laplacianediting.vtkLaplacianDeformationFilter,
+                             laplacianediting.vtkLaplacianLandmarkWarp,
+                             laplacianediting.vtkLaplacianSurfaceRegistration):
+            own = [name for name in dir(filter_class) if name.startswith("Set")
+                   and name not in dir(vtkPointSetAlgorithm)]
+            self.assertGreater(len(own), 40, filter_class.__name__)
+            for name in own:
+                text = getattr(filter_class, name).__doc__ or ""
+                # The wrapper writes signature lines ("Name(self...) -> ..." and "C++: ..."),
+                # then the header's comment.
+                prose = [line for line in text.splitlines() if line.strip() and not line.startswith(
+                    (name + "(", "C++:", "    ")) and "->" not in line]
+                if not prose:
+                    undocumented.append(filter_class.__name__ + "." + name)
         self.assertEqual(undocumented, [])
 
 
