@@ -159,6 +159,26 @@ if printed(warp).get("ARAPIterations") != "7":
     failures.append("the warp's ARAPIterations property does not reach its filter")
 print("the shared properties of both proxies come from LaplacianEditFilter")
 
+# Template fitting: a sphere fitted onto an ellipsoid of other vertices, the fit's own defaults
+# on its proxy.
+template = simple.Sphere(ThetaResolution=40, PhiResolution=40)
+ellipsoid = simple.Transform(Input=simple.Sphere(ThetaResolution=64, PhiResolution=48))
+ellipsoid.Transform.Scale = [1.2, 1.0, 0.9]
+fit = simple.LaplacianSurfaceRegistration(Input=template, Target=ellipsoid)
+fitted = servermanager.Fetch(fit)
+on_server = printed(fit)
+for name, text in (("RotationMode", "AsRigidAsPossible"), ("LaplacianWeights", "Cotangent"),
+                   ("OutputDisplacement", "On"),
+                   ("FinalMatchWeight", "0.03")):
+    if on_server.get(name) != text:
+        failures.append(f"LaplacianSurfaceRegistration.{name} is {on_server.get(name)}, expected {text}")
+rms = fitted.GetFieldData().GetArray("RMSDistanceToTarget")
+if fitted.GetNumberOfPoints() != servermanager.Fetch(template).GetNumberOfPoints() or not rms or \
+        rms.GetValue(0) > 2e-3 or not fitted.GetPointData().GetArray("MatchTrusted"):
+    failures.append(f"the sphere's fit onto the ellipsoid: {fitted.GetNumberOfPoints()} points, "
+                    f"RMS distance {rms.GetValue(0) if rms else None}")
+print(f"a sphere fitted onto an ellipsoid: RMS distance {rms.GetValue(0) if rms else None}")
+
 view = scene.show(deform)
 SaveScreenshot(sys.argv[3], view, ImageResolution=[600, 500])
 failures += scene.compare_with_baseline(sys.argv[3], sys.argv[2], 0.05)
