@@ -87,6 +87,18 @@ void Barycentric(const double p[3], const double a[3], const double b[3], const 
   weights[0] = 1.0 - weights[1] - weights[2];
 }
 
+// The template's shape with its point normals, as it lies now (its own orientation).
+vtkSmartPointer<vtkPolyData> WithPointNormals(vtkPolyData* shape)
+{
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputData(shape);
+  normals->SplittingOff();
+  normals->ConsistencyOff();
+  normals->AutoOrientNormalsOff();
+  normals->Update();
+  return normals->GetOutput();
+}
+
 // The triangles with a corner on an edge that only one triangle has: a hole's rim, or the
 // target's border.
 std::vector<char> RimTriangles(vtkPolyData* surface)
@@ -246,13 +258,7 @@ void TargetMatcher::OrientCloud(vtkPolyData* shape)
   {
     return;
   }
-  vtkNew<vtkPolyDataNormals> shapeNormals;
-  shapeNormals->SetInputData(shape);
-  shapeNormals->SplittingOff();
-  shapeNormals->ConsistencyOff();
-  shapeNormals->AutoOrientNormalsOff();
-  shapeNormals->Update();
-  vtkPolyData* normalized = shapeNormals->GetOutput();
+  vtkSmartPointer<vtkPolyData> normalized = WithPointNormals(shape);
   vtkDataArray* own = normalized->GetPointData()->GetNormals();
   vtkNew<vtkStaticPointLocator> nearest;
   nearest->SetDataSet(normalized);
@@ -274,13 +280,8 @@ void TargetMatcher::OrientCloud(vtkPolyData* shape)
 
 void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches) const
 {
-  vtkNew<vtkPolyDataNormals> shapeNormals;
-  shapeNormals->SetInputData(shape);
-  shapeNormals->SplittingOff();
-  shapeNormals->ConsistencyOff();
-  shapeNormals->AutoOrientNormalsOff();
-  shapeNormals->Update();
-  vtkDataArray* own = shapeNormals->GetOutput()->GetPointData()->GetNormals();
+  vtkSmartPointer<vtkPolyData> normalized = WithPointNormals(shape);
+  vtkDataArray* own = normalized->GetPointData()->GetNormals();
   const vtkIdType n = shape->GetNumberOfPoints();
   matches.Targets.resize(n);
   matches.Landings.resize(n);
