@@ -1,5 +1,7 @@
 #include "TargetMatcher.h"
 
+#include "SMPFor.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -181,6 +183,17 @@ std::string TargetMatcher::SetTarget(vtkPointSet* target)
     this->Normals = this->Surface->GetPointData()->GetNormals();
     this->RimCells = RimTriangles(this->Surface);
     this->OnSurface = OnSurfaceFraction * this->Surface->GetLength();
+    // Match's threads read the corners from here and the cells through the locator, whose
+    // structures are built once on this thread.
+    this->Corners.resize(this->Surface->GetNumberOfCells());
+    vtkIdType count = 0;
+    const vtkIdType* corners = nullptr;
+    for (vtkIdType c = 0; c < this->Surface->GetNumberOfCells(); ++c)
+    {
+      this->Surface->GetCellPoints(c, count, corners);
+      std::copy(corners, corners + 3, this->Corners[c].begin());
+    }
+    this->Surface->BuildCells();
     this->Cells->SetDataSet(this->Surface);
     this->Cells->BuildLocator();
     return {};
@@ -215,9 +228,7 @@ void TargetMatcher::Closest(const double point[3], double closest[3], double nor
       vtkMath::Norm(across) > RimSlant * vtkMath::Norm(offset);
     // The normal to match with: the corners' normals, interpolated, smoother than the face's on
     // a noisy scan.
-    vtkIdType count = 0;
-    const vtkIdType* corners = nullptr;
-    this->Surface->GetCellPoints(cellId, count, corners);
+    const std::array<vtkIdType, 3>& corners = this->Corners[cellId];
     double a[3], b[3], c[3], weights[3], cornerNormal[3];
     this->Surface->GetPoint(corners[0], a);
     this->Surface->GetPoint(corners[1], b);
@@ -289,26 +300,29 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
   matches.Trusted.assign(n, 1);
   std::vector<double> cosines(n, 1.0);
   std::vector<char> rims(n, 0);
-  vtkIdType facing = 0, opposed = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3], closest[3], normal[3], mine[3];
-    shape->GetPoint(i, p);
-    bool rim = false;
-    this->Closest(p, closest, normal, rim);
-    own->GetTuple(i, mine);
-    const double along = (closest[0] - p[0]) * normal[0] + (closest[1] - p[1]) * normal[1] +
-      (closest[2] - p[2]) * normal[2];
-    for (int k = 0; k < 3; ++k)
+  // The closest points are most of a fit's time: on both cores.
+  SMPFor(0, static_cast<int>(n), [&](int first, int last) {
+    for (vtkIdType i = first; i < last; ++i)
     {
-      matches.Targets[i][k] = p[k] + along * normal[k];
-      matches.Landings[i][k] = this->Surface ? closest[k] : matches.Targets[i][k];
+      double p[3], closest[3], normal[3], mine[3];
+      shape->GetPoint(i, p);
+      bool rim = false;
+      this->Closest(p, closest, normal, rim);
+      own->GetTuple(i, mine);
+      const double along = (closest[0] - p[0]) * normal[0] + (closest[1] - p[1]) * normal[1] +
+        (closest[2] - p[2]) * normal[2];
+      for (int k = 0; k < 3; ++k)
+      {
+        matches.Targets[i][k] = p[k] + along * normal[k];
+        matches.Landings[i][k] = this->Surface ? closest[k] : matches.Targets[i][k];
+      }
+      matches.Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(p, closest));
+      cosines[i] = vtkMath::Dot(normal, mine);
+      rims[i] = rim;
     }
-    matches.Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(p, closest));
-    cosines[i] = vtkMath::Dot(normal, mine);
-    (cosines[i] >= 0.0 ? facing : opposed) += 1;
-    rims[i] = rim;
-  }
+  });
+  const auto facing = std::count_if(cosines.begin(), cosines.end(), [](double c) { return c >= 0.0; });
+  const auto opposed = static_cast<decltype(facing)>(n) - facing;
   // A surface's normals may point the other way than the template's all over (another
   // orientation); a cloud's sign is unknown point by point.
   const double sign = opposed > facing ? -1.0 : 1.0;

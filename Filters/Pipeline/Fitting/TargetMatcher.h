@@ -18,6 +18,7 @@
 #include "vtkLaplacianEditingFiltersModule.h" // for export macro
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
+#include "vtkType.h"
 
 #include <array>
 #include <string>
@@ -87,6 +88,7 @@ private:
   vtkSmartPointer<vtkDataArray> Normals;     // per point (a cloud's estimated)
   vtkSmartPointer<vtkDataArray> FaceNormals; // per triangle of a surface
   std::vector<char> RimCells;
+  std::vector<std::array<vtkIdType, 3>> Corners; // per triangle of a surface
   bool CloudOriented = false;
   double OnSurface = 0.0; // nearer the surface than this, a point is on it
 };
