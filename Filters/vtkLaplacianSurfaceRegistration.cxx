@@ -7,6 +7,7 @@
 #include "TargetMatcher.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -28,6 +29,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lep = LaplacianEditing::Pipeline;
@@ -47,6 +49,36 @@ constexpr double VolumeProgress = 0.9;
 // VTK's ICP: enough sampled points and iterations for a pose, not a fit.
 constexpr int PoseLandmarks = 2000;
 constexpr int PoseIterations = 100;
+// The match pull and the bending weight are calibrated on templates whose mean edge is this
+// share of the diagonal or longer (RegistrationBenchmark's: 0.49% for the Armadillo's 37k
+// vertices, up to 1.8%). A finer template keeps their meaning: each vertex's pull holds less
+// area (a quarter at half the spacing), and ARAP's bending term weakens with the square of the
+// spacing (ArapBending.h). Without this, the Armadillo subdivided to 149k vertices turned 1,893
+// triangles over where the 37k template turns one (RegistrationBenchmark --subdivide 1).
+constexpr double CalibratedSpacing = 0.0045;
+
+// The mean length of the triangles' edges (interior edges counted twice).
+double MeanEdgeLength(vtkPolyData* surface)
+{
+  double sum = 0.0;
+  vtkIdType edges = 0;
+  vtkIdType count = 0;
+  const vtkIdType* corners = nullptr;
+  auto polygons = vtk::TakeSmartPointer(surface->GetPolys()->NewIterator());
+  for (polygons->GoToFirstCell(); !polygons->IsDoneWithTraversal(); polygons->GoToNextCell())
+  {
+    polygons->GetCurrentCell(count, corners);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      double a[3], b[3];
+      surface->GetPoint(corners[k], a);
+      surface->GetPoint(corners[(k + 1) % count], b);
+      sum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      ++edges;
+    }
+  }
+  return edges > 0 ? sum / edges : 0.0;
+}
 }
 
 struct vtkLaplacianSurfaceRegistration::vtkInternals
@@ -314,7 +346,10 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
   settings.NormalSmoothingRadius = this->NormalSmoothingRadius > 0.0
     ? this->NormalSmoothingRadius
     : AutomaticSmoothingFraction * internals.Diagonal;
-  settings.Bending = this->BendingWeight;
+  // Below the calibrated spacing, the pull weakens and the bending stiffens (CalibratedSpacing).
+  const double spacing = MeanEdgeLength(rest) / internals.Diagonal;
+  const double fineness = spacing > 0.0 ? std::min(1.0, spacing / CalibratedSpacing) : 1.0;
+  settings.Bending = this->BendingWeight / (fineness * fineness);
   const bool merge = this->MergeCoincidentPoints != 0;
   internals.Guard.Reset(shape->GetNumberOfPoints());
   const int rounds = this->NumberOfStages * this->RoundsPerStage + (source.LandmarkSources ? 1 : 0);
@@ -372,7 +407,7 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
         targets.push_back(matches.Targets[i]);
       }
       source.SetMatches(trusted, std::move(targets), choose);
-      if (!run(weight, 0.0))
+      if (!run(weight * fineness, 0.0)) // the pull's square scales with the area a vertex holds
       {
         return false;
       }

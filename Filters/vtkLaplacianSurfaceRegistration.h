@@ -119,6 +119,9 @@ public:
    * A larger final pull lands the template closer on the target (0.3: within 0.01-0.6% of the
    * diagonal on RegistrationBenchmark's cases, against 0.1-0.7%), at the price of the
    * correspondence and of triangles turned over on fine parts where matches disagree.
+   * Both weights, and BendingWeight, mean the same on a template of any resolution: where the
+   * template's mean edge is shorter than 0.45% of its diagonal, the pull is scaled by the
+   * spacing's ratio and the bending by its inverse square.
    */
   vtkSetClampMacro(InitialMatchWeight, double, 1e-6, 1e6);
   vtkGetMacro(InitialMatchWeight, double);

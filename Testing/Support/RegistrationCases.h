@@ -75,7 +75,9 @@ struct Case
 // The warped surface with other vertices: Loop-subdivided once (every vertex moves or is new),
 // then decimated to 40% of that, about 1.6 times the template's triangles, within a small
 // fraction of the true surface (the "truth" line's distance to the target).
-inline vtkSmartPointer<vtkPolyData> Remeshed(vtkPolyData* mesh, const KnownWarps::Motion& map)
+// `mesh` Loop-subdivided `levels` times, with double-precision points (a finer template of the
+// same shape: 4 times the vertices a level).
+inline vtkSmartPointer<vtkPolyData> Subdivided(vtkPolyData* mesh, int levels)
 {
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(mesh);
@@ -83,9 +85,21 @@ inline vtkSmartPointer<vtkPolyData> Remeshed(vtkPolyData* mesh, const KnownWarps
   clean->SetInputConnection(triangles->GetOutputPort());
   vtkNew<vtkLoopSubdivisionFilter> split;
   split->SetInputConnection(clean->GetOutputPort());
-  split->SetNumberOfSubdivisions(1);
+  split->SetNumberOfSubdivisions(levels);
+  split->Update();
+  auto fine = vtkSmartPointer<vtkPolyData>::New();
+  fine->DeepCopy(split->GetOutput());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->DeepCopy(fine->GetPoints());
+  fine->SetPoints(points);
+  return fine;
+}
+
+inline vtkSmartPointer<vtkPolyData> Remeshed(vtkPolyData* mesh, const KnownWarps::Motion& map)
+{
   vtkNew<vtkQuadricDecimation> decimate;
-  decimate->SetInputConnection(split->GetOutputPort());
+  decimate->SetInputData(Subdivided(mesh, 1));
   decimate->SetTargetReduction(0.6);
   decimate->Update();
   auto remeshed = vtkSmartPointer<vtkPolyData>::New();
