@@ -1,6 +1,7 @@
 #include "vtkLaplacianLandmarkWarp.h"
 
 #include "EditPipeline.h"
+#include "LandmarkPairs.h"
 #include "LandmarkSource.h"
 
 #include "vtkAbstractArray.h"
@@ -243,7 +244,8 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
       return pipeline.Check("Target landmarks on input port 2 need the source landmarks on input "
                             "port 1.");
     }
-    if (!this->PairLandmarks(landmarks, pairedTargets))
+    if (!pipeline.Check(lep::PairLandmarks(landmarks, pairedTargets,
+          this->Internals->PairedSources, this->Internals->PairedTargets)))
     {
       return false;
     }
@@ -284,86 +286,6 @@ bool vtkLaplacianLandmarkWarp::FindLandmarks(vtkPoints*& sources, vtkPoints*& ta
   this->NumberOfLandmarks = static_cast<int>(sources->GetNumberOfPoints());
   targets = this->MoveTargets(targets);
   this->Internals->WarpedTargets->DeepCopy(targets->GetData());
-  return true;
-}
-
-bool vtkLaplacianLandmarkWarp::PairLandmarks(vtkPointSet* sources, vtkPointSet* targets)
-{
-  lep::EditPipeline& pipeline = this->Internals->Pipeline;
-  vtkPoints* pairedSources = this->Internals->PairedSources;
-  vtkPoints* pairedTargets = this->Internals->PairedTargets;
-  pairedSources->Reset();
-  pairedTargets->Reset();
-  vtkAbstractArray* sourceLabels = sources->GetPointData()->GetAbstractArray("Label");
-  vtkAbstractArray* targetLabels = targets->GetPointData()->GetAbstractArray("Label");
-  if (!sourceLabels || !targetLabels)
-  {
-    if (sources->GetNumberOfPoints() != targets->GetNumberOfPoints())
-    {
-      return pipeline.Check("There are " + std::to_string(sources->GetNumberOfPoints()) +
-        " source landmarks and " + std::to_string(targets->GetNumberOfPoints()) +
-        " targets, without Label arrays to pair them by: give each source landmark one target.");
-    }
-    for (vtkIdType i = 0; i < sources->GetNumberOfPoints(); ++i)
-    {
-      pairedSources->InsertNextPoint(sources->GetPoint(i));
-      pairedTargets->InsertNextPoint(targets->GetPoint(i));
-    }
-    return true;
-  }
-  // Each label once on each side, and on both.
-  auto index = [](vtkAbstractArray* labels, std::map<std::string, vtkIdType>& ids, std::string& twice) {
-    for (vtkIdType i = 0; i < labels->GetNumberOfValues(); ++i)
-    {
-      const std::string label = labels->GetVariantValue(i).ToString();
-      if (!ids.emplace(label, i).second && twice.empty())
-      {
-        twice = label;
-      }
-    }
-  };
-  std::map<std::string, vtkIdType> fromSource, fromTarget;
-  std::string twice;
-  index(sourceLabels, fromSource, twice);
-  index(targetLabels, fromTarget, twice);
-  if (!twice.empty())
-  {
-    return pipeline.Check("The landmark label \"" + twice +
-      "\" appears twice on one side: each label names one landmark of the sources and one of "
-      "the targets.");
-  }
-  std::vector<std::string> unpaired;
-  for (const auto& [label, id] : fromSource)
-  {
-    if (!fromTarget.count(label))
-    {
-      unpaired.push_back(label + " (sources only)");
-    }
-  }
-  for (const auto& [label, id] : fromTarget)
-  {
-    if (!fromSource.count(label))
-    {
-      unpaired.push_back(label + " (targets only)");
-    }
-  }
-  if (!unpaired.empty())
-  {
-    std::string list;
-    for (std::size_t k = 0; k < unpaired.size() && k < 5; ++k)
-    {
-      list += (k ? ", " : "") + unpaired[k];
-    }
-    return pipeline.Check(std::to_string(unpaired.size()) +
-      " landmark labels are on one side only: " + list + (unpaired.size() > 5 ? ", ..." : "") +
-      ". Pair every source label with a target label.");
-  }
-  for (vtkIdType i = 0; i < sourceLabels->GetNumberOfValues(); ++i)
-  {
-    pairedSources->InsertNextPoint(sources->GetPoint(i));
-    pairedTargets->InsertNextPoint(
-      targets->GetPoint(fromTarget.at(sourceLabels->GetVariantValue(i).ToString())));
-  }
   return true;
 }
 

@@ -203,8 +203,6 @@ private:
   // The landmarks of ports 1 and 2 or the vtkPoints; false, with the error reported, if they
   // are not usable.
   bool FindLandmarks(vtkPoints*& sources, vtkPoints*& targets);
-  // Ports 1 and 2's points paired by label, or in order.
-  bool PairLandmarks(vtkPointSet* sources, vtkPointSet* targets);
   // The targets with the moved ones in place (the targets themselves if none moved).
   vtkPoints* MoveTargets(vtkPoints* targets);
   LaplacianEditing::Pipeline::SolverSettings Settings(double diagonal) const;

@@ -2,6 +2,7 @@
 
 #include "EditPipeline.h"
 #include "FitSource.h"
+#include "LandmarkPairs.h"
 #include "FoldGuard.h"
 #include "Stopwatch.h"
 #include "TargetMatcher.h"
@@ -98,6 +99,7 @@ struct vtkLaplacianSurfaceRegistration::vtkInternals
   // frame.
   vtkNew<vtkTransform> Pose;
   vtkNew<vtkPoints> FrameTargets;
+  vtkNew<vtkPoints> LandmarkSources; // paired by label
   vtkNew<vtkPoints> LandmarkTargets;
   double Diagonal = 1.0;
   // The share of the progress the rounds report in (the rest is a volume's).
@@ -114,7 +116,7 @@ vtkLaplacianSurfaceRegistration::vtkLaplacianSurfaceRegistration()
   this->ARAPIterations = 30;
   this->Convergence = 1e-3;
   this->OutputDisplacement = 1;
-  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfInputPorts(4);
   this->SetInputArrayToProcess(0, 2, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Target");
 }
 
@@ -128,6 +130,11 @@ void vtkLaplacianSurfaceRegistration::SetTargetData(vtkDataObject* target)
 void vtkLaplacianSurfaceRegistration::SetLandmarksData(vtkDataObject* landmarks)
 {
   this->SetInputData(2, landmarks);
+}
+
+void vtkLaplacianSurfaceRegistration::SetTargetLandmarksData(vtkDataObject* landmarks)
+{
+  this->SetInputData(3, landmarks);
 }
 
 vtkLinearTransform* vtkLaplacianSurfaceRegistration::GetPose()
@@ -144,7 +151,7 @@ int vtkLaplacianSurfaceRegistration::FillInputPortInformation(int port, vtkInfor
     return 1;
   }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), port == 2 ? 1 : 0);
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), port >= 2 ? 1 : 0);
   return 1;
 }
 
@@ -155,6 +162,7 @@ int vtkLaplacianSurfaceRegistration::RequestData(
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkPointSet* target = vtkPointSet::GetData(inputVector[1]);
   vtkPointSet* landmarks = vtkPointSet::GetData(inputVector[2]);
+  vtkPointSet* subjectLandmarks = vtkPointSet::GetData(inputVector[3]);
   vtkPointSet* output = vtkPointSet::GetData(outputVector);
   vtkInternals& internals = *this->Internals;
   lep::EditPipeline& pipeline = internals.Pipeline;
@@ -181,7 +189,7 @@ int vtkLaplacianSurfaceRegistration::RequestData(
   vtkPoints* targets = nullptr;
   if (!surface || !pipeline.Check(lep::SurfaceAdapter::CheckSurface(surface)) ||
     !pipeline.Check(internals.Matcher.SetTarget(target)) ||
-    !this->FindLandmarks(landmarks, sources, targets))
+    !this->FindLandmarks(landmarks, subjectLandmarks, sources, targets))
   {
     return 1;
   }
@@ -231,42 +239,61 @@ int vtkLaplacianSurfaceRegistration::RequestData(
 }
 
 bool vtkLaplacianSurfaceRegistration::FindLandmarks(
-  vtkPointSet* landmarks, vtkPoints*& sources, vtkPoints*& targets)
+  vtkPointSet* landmarks, vtkPointSet* subjectLandmarks, vtkPoints*& sources, vtkPoints*& targets)
 {
   lep::EditPipeline& pipeline = this->Internals->Pipeline;
   if (!landmarks)
   {
-    return true;
+    return !subjectLandmarks ||
+      pipeline.Check("The target's landmarks on input port 3 need the template's on input port 2.");
   }
-  vtkDataArray* array = this->GetInputArrayToProcess(0, landmarks);
-  if (!landmarks->GetPoints() || !array || array->GetNumberOfComponents() != 3)
+  vtkPoints* paired = this->Internals->LandmarkTargets;
+  paired->SetDataTypeToDouble();
+  if (subjectLandmarks)
   {
-    return pipeline.Check("The landmarks on input port 2 need points (on the template) and a "
-                          "point array of three components holding their places on the target "
-                          "(\"Target\" unless SetInputArrayToProcess names another).");
+    // Two sets of markups, paired by label.
+    if (!pipeline.Check(lep::PairLandmarks(
+          landmarks, subjectLandmarks, this->Internals->LandmarkSources, paired)))
+    {
+      return false;
+    }
+    sources = this->Internals->LandmarkSources;
   }
-  const vtkIdType count = landmarks->GetNumberOfPoints();
+  else
+  {
+    vtkDataArray* array = this->GetInputArrayToProcess(0, landmarks);
+    if (!landmarks->GetPoints() || !array || array->GetNumberOfComponents() != 3)
+    {
+      return pipeline.Check("The landmarks on input port 2 need points (on the template) and a "
+                            "point array of three components holding their places on the target "
+                            "(\"Target\" unless SetInputArrayToProcess names another), or the "
+                            "target's landmarks on input port 3, paired by label.");
+    }
+    sources = landmarks->GetPoints();
+    paired->SetNumberOfPoints(array->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      paired->SetPoint(i, array->GetTuple3(i));
+    }
+  }
+  const vtkIdType count = sources->GetNumberOfPoints();
   if (count < 3 && this->PoseMode != POSE_NONE)
   {
-    return pipeline.Check("The pose needs at least three landmark pairs, and input port 2 has " +
+    return pipeline.Check("The pose needs at least three landmark pairs, and there are " +
       std::to_string(count) + ": give three or more, none (the pose then comes from iterative "
       "closest points), or set PoseMode to POSE_NONE.");
   }
-  sources = landmarks->GetPoints();
-  targets = this->Internals->LandmarkTargets;
-  targets->SetDataTypeToDouble();
-  targets->SetNumberOfPoints(count);
   for (vtkIdType i = 0; i < count; ++i)
   {
     double target[3];
-    array->GetTuple(i, target);
+    paired->GetPoint(i, target);
     if (!std::isfinite(target[0]) || !std::isfinite(target[1]) || !std::isfinite(target[2]))
     {
       return pipeline.Check("Landmark " + std::to_string(i) + "'s target has a NaN or infinite "
                             "coordinate.");
     }
-    targets->SetPoint(i, target);
   }
+  targets = paired;
   return true;
 }
 

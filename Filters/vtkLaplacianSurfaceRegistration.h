@@ -80,7 +80,10 @@ public:
    * Port 0 is the template (SetInputConnection), port 1 the target, port 2 (optional) the
    * landmarks: a point set whose points lie on the template and whose three-component point
    * array "Target" (SetInputArrayToProcess(0, 2, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
-   * name) names another) holds their places on the target.
+   * name) names another) holds their places on the target. Or, with port 3, two sets of
+   * landmarks, the template's on port 2 and the target's on port 3 (Slicer markups through
+   * vtkLaplacianMarkupsReader), paired by their Label arrays, or in order without them, as
+   * vtkLaplacianLandmarkWarp pairs its ports 1 and 2.
    */
   ///@{
   /** The target on input port 1: a triangle surface, or points alone (a point cloud). */
@@ -91,6 +94,13 @@ public:
   void SetLandmarksConnection(vtkAlgorithmOutput* landmarks) { this->SetInputConnection(2, landmarks); }
   /** The landmarks on input port 2, without a pipeline. */
   void SetLandmarksData(vtkDataObject* landmarks);
+  /** The target's landmarks on input port 3, paired with port 2's by label. */
+  void SetTargetLandmarksConnection(vtkAlgorithmOutput* landmarks)
+  {
+    this->SetInputConnection(3, landmarks);
+  }
+  /** The target's landmarks on input port 3, without a pipeline. */
+  void SetTargetLandmarksData(vtkDataObject* landmarks);
   ///@}
 
   /**
@@ -196,9 +206,10 @@ private:
   vtkLaplacianSurfaceRegistration(const vtkLaplacianSurfaceRegistration&) = delete;
   void operator=(const vtkLaplacianSurfaceRegistration&) = delete;
 
-  // The landmarks of port 2 (none: true with both null); false, with the error reported, if
-  // they are not usable.
-  bool FindLandmarks(vtkPointSet* landmarks, vtkPoints*& sources, vtkPoints*& targets);
+  // The landmarks of port 2 with their Target array, or paired with port 3's (none: true with
+  // both null); false, with the error reported, if they are not usable.
+  bool FindLandmarks(vtkPointSet* landmarks, vtkPointSet* subjectLandmarks, vtkPoints*& sources,
+    vtkPoints*& targets);
   // The pose, from the landmarks or by ICP; false, with the error reported, if it cannot be
   // found.
   bool FindPose(vtkPolyData* fitted, vtkPointSet* target, vtkPoints* sources, vtkPoints* targets);

@@ -21,6 +21,7 @@
 #include "vtkIdFilter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -28,6 +29,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 using namespace FilterTestHelpers;
 
@@ -299,6 +302,82 @@ TEST(SurfaceRegistration, ProgressRisesAndAbortEndsAtAShape)
   EXPECT_LT(registration->GetNumberOfRounds(), rounds);
   EXPECT_EQ(registration->GetOutput()->GetNumberOfPoints(), plane->GetNumberOfPoints());
   EXPECT_TRUE(registration->GetOutput()->GetPointData()->GetArray("DistanceToTarget"));
+}
+
+TEST(SurfaceRegistration, TargetLandmarksPairByLabel)
+{
+  // The template's landmarks on port 2 and the target's on port 3, labelled and in another
+  // order (two Slicer markups files), fit as the same pairs given in a Target array do.
+  vtkSmartPointer<vtkPolyData> plane = BumpyPlane(30);
+  vtkNew<vtkPolyData> target;
+  target->DeepCopy(plane);
+  vtkNew<vtkPoints> raised;
+  raised->SetDataTypeToDouble();
+  for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
+  {
+    const double* p = plane->GetPoint(i);
+    raised->InsertNextPoint(p[0], p[1], p[2] + 0.05 * p[0] * p[0]);
+  }
+  target->SetPoints(raised);
+  const std::vector<vtkIdType> ids = { 0, 29, 465, 930, 960 };
+  const std::vector<std::string> names = { "a", "b", "c", "d", "e" };
+  vtkNew<vtkPoints> sources, targets, reordered;
+  sources->SetDataTypeToDouble();
+  targets->SetDataTypeToDouble();
+  reordered->SetDataTypeToDouble();
+  vtkNew<vtkStringArray> labels, reorderedLabels;
+  labels->SetName("Label");
+  reorderedLabels->SetName("Label");
+  for (std::size_t k = 0; k < ids.size(); ++k)
+  {
+    sources->InsertNextPoint(plane->GetPoint(ids[k]));
+    targets->InsertNextPoint(raised->GetPoint(ids[k]));
+    labels->InsertNextValue(names[k]);
+    const std::size_t back = ids.size() - 1 - k;
+    reordered->InsertNextPoint(raised->GetPoint(ids[back]));
+    reorderedLabels->InsertNextValue(names[back]);
+  }
+  auto paired = Registration(plane, target, Landmarks(sources, targets));
+  paired->Update();
+  vtkNew<vtkPolyData> templateMarkups, targetMarkups;
+  templateMarkups->SetPoints(sources);
+  templateMarkups->GetPointData()->AddArray(labels);
+  targetMarkups->SetPoints(reordered);
+  targetMarkups->GetPointData()->AddArray(reorderedLabels);
+  auto labelled = Registration(plane, target, templateMarkups);
+  labelled->SetTargetLandmarksData(targetMarkups);
+  ErrorCatcher errors(labelled);
+  labelled->Update();
+  EXPECT_TRUE(errors.Messages.empty()) << errors.Messages;
+  EXPECT_GT(ExpectDisplacement(plane, labelled->GetOutput()), 0.0);
+  // The same pairs give the same fit, up to the fit's run-to-run spread (threaded sums decide
+  // a round's stop: up to 1.3e-4 of the diagonal measured); paired in order, the reordered
+  // markups pull the template elsewhere.
+  const double diagonal = Diagonal(plane);
+  EXPECT_LT(MaxPointDistance(paired->GetOutput(), labelled->GetOutput()), 1e-3 * diagonal);
+  vtkNew<vtkPolyData> unlabelled;
+  unlabelled->SetPoints(reordered);
+  auto inOrder = Registration(plane, target, templateMarkups);
+  inOrder->SetTargetLandmarksData(unlabelled);
+  inOrder->Update();
+  EXPECT_GT(MaxPointDistance(paired->GetOutput(), inOrder->GetOutput()), 1e-2 * diagonal);
+
+  // A label on one side only, and the target's landmarks without the template's, are errors.
+  reorderedLabels->SetValue(0, "z");
+  targetMarkups->Modified();
+  ErrorCatcher unpaired(labelled);
+  labelled->Update();
+  EXPECT_NE(unpaired.Messages.find("2 landmark labels are on one side only: e (sources only), "
+                                   "z (targets only)"),
+    std::string::npos)
+    << unpaired.Messages;
+  EXPECT_EQ(MaxPointDistance(plane, labelled->GetOutput()), 0.0);
+  auto alone = Registration(plane, target);
+  alone->SetTargetLandmarksData(targetMarkups);
+  ErrorCatcher missing(alone);
+  alone->Update();
+  EXPECT_NE(missing.Messages.find("need the template's on input port 2"), std::string::npos)
+    << missing.Messages;
 }
 
 TEST(SurfaceRegistration, BadInputsAreClearErrors)

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 #include <unordered_map>
 
 namespace LaplacianEditing
@@ -27,6 +28,12 @@ namespace Pipeline
 {
 namespace
 {
+// Match's threads, each with its own cell locator (a few tens of MB each on a million triangles).
+std::size_t MatchThreads()
+{
+  return std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), 8);
+}
+
 // A match on a rim triangle whose offset leans more than this (a sine) from the normal lies
 // beyond the rim.
 constexpr double RimSlant = 0.1;
@@ -194,8 +201,13 @@ std::string TargetMatcher::SetTarget(vtkPointSet* target)
       std::copy(corners, corners + 3, this->Corners[c].begin());
     }
     this->Surface->BuildCells();
-    this->Cells->SetDataSet(this->Surface);
-    this->Cells->BuildLocator();
+    this->Cells.resize(MatchThreads());
+    for (auto& locator : this->Cells)
+    {
+      locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+      locator->SetDataSet(this->Surface);
+      locator->BuildLocator();
+    }
     return {};
   }
   // Points alone: a cloud (a surface's vertices without its triangles count as one).
@@ -207,7 +219,8 @@ std::string TargetMatcher::SetTarget(vtkPointSet* target)
   return {};
 }
 
-void TargetMatcher::Closest(const double point[3], double closest[3], double normal[3], bool& rim) const
+void TargetMatcher::Closest(
+  const double point[3], double closest[3], double normal[3], bool& rim, std::size_t locator) const
 {
   if (this->Surface)
   {
@@ -215,7 +228,7 @@ void TargetMatcher::Closest(const double point[3], double closest[3], double nor
     vtkIdType cellId = -1;
     int subId = 0;
     double squared = 0.0;
-    this->Cells->FindClosestPoint(point, closest, cell, cellId, subId, squared);
+    this->Cells[locator]->FindClosestPoint(point, closest, cell, cellId, subId, squared);
     // Beyond a rim, the closest point is on the rim's edge, off the perpendicular: the point lies
     // where the target has no surface. On a rim triangle's face it is a match like any other.
     double face[3];
@@ -300,25 +313,33 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
   matches.Trusted.assign(n, 1);
   std::vector<double> cosines(n, 1.0);
   std::vector<char> rims(n, 0);
-  // The closest points are most of a fit's time: on both cores.
-  SMPFor(0, static_cast<int>(n), [&](int first, int last) {
-    for (vtkIdType i = first; i < last; ++i)
+  auto matchPoint = [&](vtkIdType i, std::size_t locator) {
+    double p[3], closest[3], normal[3], mine[3];
+    shape->GetPoint(i, p);
+    bool rim = false;
+    this->Closest(p, closest, normal, rim, locator);
+    own->GetTuple(i, mine);
+    const double along = (closest[0] - p[0]) * normal[0] + (closest[1] - p[1]) * normal[1] +
+      (closest[2] - p[2]) * normal[2];
+    for (int k = 0; k < 3; ++k)
     {
-      double p[3], closest[3], normal[3], mine[3];
-      shape->GetPoint(i, p);
-      bool rim = false;
-      this->Closest(p, closest, normal, rim);
-      own->GetTuple(i, mine);
-      const double along = (closest[0] - p[0]) * normal[0] + (closest[1] - p[1]) * normal[1] +
-        (closest[2] - p[2]) * normal[2];
-      for (int k = 0; k < 3; ++k)
+      matches.Targets[i][k] = p[k] + along * normal[k];
+      matches.Landings[i][k] = this->Surface ? closest[k] : matches.Targets[i][k];
+    }
+    matches.Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(p, closest));
+    cosines[i] = vtkMath::Dot(normal, mine);
+    rims[i] = rim;
+  };
+  // The closest points are most of a fit's time: a part per thread, each with its own cell
+  // locator (a cloud's point locator keeps no query state).
+  const int parts = static_cast<int>(this->Surface ? this->Cells.size() : MatchThreads());
+  SMPFor(0, parts, [&](int firstPart, int lastPart) {
+    for (int part = firstPart; part < lastPart; ++part)
+    {
+      for (vtkIdType i = n * part / parts; i < n * (part + 1) / parts; ++i)
       {
-        matches.Targets[i][k] = p[k] + along * normal[k];
-        matches.Landings[i][k] = this->Surface ? closest[k] : matches.Targets[i][k];
+        matchPoint(i, this->Surface ? part : 0);
       }
-      matches.Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(p, closest));
-      cosines[i] = vtkMath::Dot(normal, mine);
-      rims[i] = rim;
     }
   });
   const auto facing = std::count_if(cosines.begin(), cosines.end(), [](double c) { return c >= 0.0; });

@@ -78,12 +78,14 @@ public:
 
 private:
   // The closest target point to `point`, the target's normal there and whether `point` lies
-  // beyond a rim.
-  void Closest(const double point[3], double closest[3], double normal[3], bool& rim) const;
+  // beyond a rim, found with the surface's locator `locator`.
+  void Closest(const double point[3], double closest[3], double normal[3], bool& rim,
+    std::size_t locator = 0) const;
 
   vtkSmartPointer<vtkPolyData> Surface; // null for a cloud
   vtkSmartPointer<vtkPointSet> Cloud;
-  vtkNew<vtkStaticCellLocator> Cells;
+  // One locator per thread of Match: VTK 9.1's keeps a query's visited cells in the object.
+  std::vector<vtkSmartPointer<vtkStaticCellLocator>> Cells;
   vtkNew<vtkStaticPointLocator> Points;
   vtkSmartPointer<vtkDataArray> Normals;     // per point (a cloud's estimated)
   vtkSmartPointer<vtkDataArray> FaceNormals; // per triangle of a surface
