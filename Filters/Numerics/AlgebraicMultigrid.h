@@ -54,6 +54,13 @@ public:
   Result Solve(const Block& rhs, Block& x, double tolerance, int maximumIterations,
     const ParallelFor& loop = SerialFor) const;
 
+  /// z ~ A^-1 r: one V-cycle from zero, a fixed symmetric positive definite operator (the
+  /// preconditioner of an outer Krylov iteration on a nearby matrix).
+  void Precondition(const Block& r, Block& z, const ParallelFor& loop = SerialFor) const
+  {
+    this->Cycle(0, r, z, loop);
+  }
+
   /// y = A x on the finest level.
   void Multiply(const Block& x, Block& y, const ParallelFor& loop = SerialFor) const;
 

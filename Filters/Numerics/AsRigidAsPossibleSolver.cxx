@@ -19,6 +19,44 @@ Vector3 Apply(const AffineMap& map, const Vector3& p)
   return map.leftCols<3>() * p + map.col(3);
 }
 
+// A solve's iterations, each with its energy: whether the solve stops after it, converged
+// (the energy fell by less than the tolerance per iteration over the last `window`, or
+// `stalled`) or aborted through the progress callback.
+class IterationLog
+{
+public:
+  IterationLog(double start, const ArapOptions& options, std::vector<double>* energies)
+    : Options(options)
+    , Energies(energies)
+  {
+    this->Recent[0] = start;
+  }
+
+  bool Stop(ArapResult& result, double energy, int window, bool stalled = false)
+  {
+    result.Energy = energy;
+    ++result.Iterations;
+    if (this->Energies)
+    {
+      this->Energies->push_back(energy);
+    }
+    const double decrease = this->Recent[(result.Iterations - window) % this->Recent.size()] - energy;
+    this->Recent[result.Iterations % this->Recent.size()] = energy;
+    if (stalled || (window > 0 && decrease <= this->Options.Tolerance * window * energy))
+    {
+      result.Converged = true;
+      return true;
+    }
+    return this->Options.Progress &&
+      !this->Options.Progress(static_cast<double>(result.Iterations) / this->Options.MaximumIterations);
+  }
+
+private:
+  const ArapOptions& Options;
+  std::vector<double>* Energies;
+  std::array<double, ConvergenceWindow + 1> Recent;
+};
+
 // Anderson acceleration's history during one solve: the last `size` differences of g and of
 // the residual f = g - x, a ring of the workspace's columns.
 class AndersonRing
@@ -929,13 +967,15 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
   {
     return result;
   }
+  if (options.Newton && !extrapolate && this->HasPlainEnergy())
+  {
+    return this->SolveNewton(iterate, options, loop, energies, result);
+  }
   // Anderson acceleration on the fixed point x -> Global(Local(x)), over flattened positions.
   AndersonRing ring(std::max(options.History, 1), 3 * static_cast<Eigen::Index>(this->FreeRows.size()), work);
   Eigen::MatrixXd x = this->FreePositions(iterate.Points);
   Eigen::MatrixXd next(this->FreeRows.size(), 3);
-  // The energy at the start and after each of the last iterations, for the stopping test.
-  std::array<double, ConvergenceWindow + 1> recent;
-  recent[0] = result.Energy;
+  IterationLog log(result.Energy, options, energies);
   for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
   {
     const Eigen::MatrixXd g = this->Global(work.Rotations, work.Patch, work, loop, points);
@@ -952,12 +992,6 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     work.Rotations.swap(work.CandidateRotations);
     iterate.Rotations.swap(work.CandidateQuaternions);
     x.swap(next); // Mix overwrites next
-    result.Energy = energy;
-    ++result.Iterations;
-    if (energies)
-    {
-      energies->push_back(energy);
-    }
     // An extrapolated solve does not stop on its first iteration: that decrease, from a guess
     // moved on by the last change, does not show what is left, and the next extrapolation
     // would double it (drag steps of 1 iteration were followed by steps of 5 to 11).
@@ -965,17 +999,8 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     // alternate long and short ones, and a short one says little (a 60-degree bend of
     // bumps.obj stopped at 1.7 times the converged energy on its 7th iteration's 5e-4). A drag
     // step, which starts near its result, tests its last iteration, after the first.
-    const int window = extrapolate ? (result.Iterations >= 2 ? 1 : 0)
-                                   : std::min(result.Iterations, ConvergenceWindow);
-    const double decrease = recent[(result.Iterations - window) % recent.size()] - energy;
-    recent[result.Iterations % recent.size()] = energy;
-    if (window > 0 && decrease <= options.Tolerance * window * energy)
-    {
-      result.Converged = true;
-      break;
-    }
-    if (options.Progress &&
-      !options.Progress(static_cast<double>(result.Iterations) / options.MaximumIterations))
+    const int done = result.Iterations + 1;
+    if (log.Stop(result, energy, extrapolate ? (done >= 2 ? 1 : 0) : std::min(done, ConvergenceWindow)))
     {
       break;
     }
@@ -1152,5 +1177,215 @@ void AsRigidAsPossibleSolver::GlobalStep(const std::vector<Eigen::Matrix3d>& rot
     }
   }
   iterate.Work.RotationsFitPoints = false; // the rotations are those of the points before
+}
+
+bool AsRigidAsPossibleSolver::HasPlainEnergy() const
+{
+  return this->Points.IsEmpty() && this->Bending.IsEmpty() && this->RotationCoupling.empty() &&
+    this->BendingRelief.empty() && this->PriorWeight == 0.0;
+}
+
+Eigen::MatrixXd AsRigidAsPossibleSolver::EdgeBalance(const std::vector<Vector3>& values,
+  const std::vector<Eigen::Matrix3d>& matrices, const ParallelFor& loop) const
+{
+  const int free = static_cast<int>(this->FreeRows.size());
+  Eigen::MatrixXd balance(free, 3);
+  loop(0, free, [&](int first, int last) {
+    for (int u = first; u < last; ++u)
+    {
+      const int i = this->FreeRows[u];
+      Vector3 sum = -0.5 * (matrices[i] * this->RestEdgeSums[i]);
+      for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
+      {
+        const int j = this->Neighbors[k];
+        sum.noalias() += this->Weights[k] * (values[i] - values[j] - 0.5 * (matrices[j] * this->RestEdges[k]));
+      }
+      balance.row(u) = sum.transpose();
+    }
+  });
+  return balance;
+}
+
+void AsRigidAsPossibleSolver::LinearizeRotations(ArapIterate::Workspace& work, const ParallelFor& loop) const
+{
+  // R = polar(M) for the ring's M = sum w e' e^T = R P: a change dM turns R by dR = R [w]x with
+  // (tr(P) I - P) w = axial(R^T dM - dM^T R) ([w]x P + P [w]x = [(tr(P) I - P) w]x). Where that
+  // matrix is nearly singular (a ring folded flat) its twist is left out, as a local-global
+  // step leaves out every one: the Hessian stays bounded.
+  work.Twists.resize(this->NumberOfEnergyVertices);
+  loop(0, this->NumberOfEnergyVertices, [&](int first, int last) {
+    for (int i = first; i < last; ++i)
+    {
+      const Eigen::Matrix3d stretch = work.Rotations[i].transpose() * this->Deformation(work.Patch, i);
+      const Eigen::Matrix3d symmetric = 0.5 * (stretch + stretch.transpose());
+      const Eigen::Matrix3d twist = symmetric.trace() * Eigen::Matrix3d::Identity() - symmetric;
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+      eigen.computeDirect(twist);
+      const Vector3 values = eigen.eigenvalues();
+      if (values(0) > 1e-3 * std::abs(values(2)))
+      {
+        work.Twists[i] =
+          eigen.eigenvectors() * values.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
+      }
+      else
+      {
+        work.Twists[i].setZero();
+      }
+    }
+  });
+}
+
+Eigen::MatrixXd AsRigidAsPossibleSolver::HessianProduct(
+  const Eigen::MatrixXd& change, ArapIterate::Workspace& work, const ParallelFor& loop) const
+{
+  std::vector<Vector3>& patchChange = work.PatchChange;
+  patchChange.assign(this->RestPatch.rows(), Vector3::Zero());
+  const int free = static_cast<int>(this->FreeRows.size());
+  loop(0, free, [&](int first, int last) {
+    for (int u = first; u < last; ++u)
+    {
+      patchChange[this->FreeRows[u]] = change.row(u).transpose();
+    }
+  });
+  std::vector<Eigen::Matrix3d>& turns = work.RotationChanges;
+  turns.resize(this->NumberOfEnergyVertices);
+  loop(0, this->NumberOfEnergyVertices, [&](int first, int last) {
+    for (int i = first; i < last; ++i)
+    {
+      const Eigen::Matrix3d& rotation = work.Rotations[i];
+      const Eigen::Matrix3d a = rotation.transpose() * this->Deformation(patchChange, i);
+      const Vector3 axial(a(2, 1) - a(1, 2), a(0, 2) - a(2, 0), a(1, 0) - a(0, 1));
+      const Vector3 w = work.Twists[i] * axial;
+      Eigen::Matrix3d cross;
+      cross << 0.0, -w(2), w(1), w(2), 0.0, -w(0), -w(1), w(0), 0.0;
+      turns[i] = rotation * cross;
+    }
+  });
+  return this->EdgeBalance(patchChange, turns, loop);
+}
+
+AsRigidAsPossibleSolver::NewtonStep AsRigidAsPossibleSolver::NewtonDirection(
+  const Eigen::MatrixXd& g, double& radius, ArapIterate::Workspace& work, const ParallelFor& loop) const
+{
+  // Steihaug's truncated conjugate gradients on H s = -g within a trust region, preconditioned
+  // by L_ff (H is L_ff minus a part that is positive semidefinite where no ring is folded, so
+  // L_ff bounds it from above), in L_ff's norm: the first step is a local-global step. Far from
+  // the minimum, the region's soft modes make H nearly singular or indefinite, and the plain
+  // Newton step overshoots by orders of magnitude; the region holds it, and negative curvature
+  // goes to its boundary.
+  constexpr double ConjugateGradientGain = 0.05;
+  constexpr int ConjugateGradientSteps = 60;
+  auto dot = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a.array() * b.array()).sum(); };
+  NewtonStep result;
+  Eigen::MatrixXd r = -g;
+  Eigen::MatrixXd z = this->Factor.Precondition(r, loop);
+  Eigen::MatrixXd p = z;
+  Eigen::MatrixXd& s = result.Step;
+  s.setZero(g.rows(), 3);
+  Eigen::MatrixXd hs = Eigen::MatrixXd::Zero(g.rows(), 3);
+  double rz = dot(r, z);
+  result.FirstStepNorm = std::sqrt(std::max(rz, 0.0));
+  if (radius <= 0.0)
+  {
+    radius = result.FirstStepNorm;
+  }
+  // |s|^2, s.p and |p|^2 in the preconditioner's norm, by their recurrences.
+  double ss = 0.0, sp = 0.0, pp = rz;
+  const double start = r.norm();
+  auto toBoundary = [&](const Eigen::MatrixXd& q) {
+    const double tau = (-sp + std::sqrt(std::max(0.0, sp * sp + pp * (radius * radius - ss)))) / pp;
+    s += tau * p;
+    hs += tau * q;
+    result.OnBoundary = true;
+  };
+  for (int k = 0; k < ConjugateGradientSteps && rz > 0.0; ++k)
+  {
+    const Eigen::MatrixXd q = this->HessianProduct(p, work, loop);
+    const double curvature = dot(p, q);
+    const double alpha = curvature > 0.0 ? rz / curvature : 0.0;
+    if (curvature <= 0.0 || ss + 2.0 * alpha * sp + alpha * alpha * pp >= radius * radius)
+    {
+      toBoundary(q);
+      break;
+    }
+    s += alpha * p;
+    hs += alpha * q;
+    ss += 2.0 * alpha * sp + alpha * alpha * pp;
+    r -= alpha * q;
+    if (r.norm() <= ConjugateGradientGain * start)
+    {
+      break;
+    }
+    z = this->Factor.Precondition(r, loop);
+    const double rzNext = dot(r, z);
+    const double beta = rzNext / rz;
+    rz = rzNext;
+    sp = beta * (sp + alpha * pp);
+    pp = rz + beta * beta * pp;
+    p = z + beta * p;
+  }
+  result.ModelDecrease = dot(g, s) + 0.5 * dot(s, hs);
+  return result;
+}
+
+ArapResult AsRigidAsPossibleSolver::SolveNewton(ArapIterate& iterate, const ArapOptions& options,
+  const ParallelFor& loop, std::vector<double>* energies, ArapResult result) const
+{
+  ArapIterate::Workspace& work = iterate.Work;
+  Eigen::MatrixXd x = this->FreePositions(iterate.Points);
+  IterationLog log(result.Energy, options, energies);
+  // The trust region's radius, in L_ff's norm: at first a local-global step's length.
+  double radius = 0.0;
+  constexpr int Retries = 3;
+  for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
+  {
+    // The gradient at the iterate (its rotations fit its points: the envelope theorem) and the
+    // rotations' linearization there; then steps until one lowers the energy, the region
+    // shrinking after each that does not, a local-global step after the last.
+    const Eigen::MatrixXd g = this->EdgeBalance(work.Patch, work.Rotations, loop);
+    this->LinearizeRotations(work, loop);
+    Eigen::MatrixXd next;
+    double energy = std::numeric_limits<double>::infinity();
+    for (int attempt = 0; attempt <= Retries && !(energy < result.Energy); ++attempt)
+    {
+      const NewtonStep step = this->NewtonDirection(g, radius, work, loop);
+      next = x + step.Step;
+      energy = this->Evaluate(next, iterate, loop);
+      // The energy's decrease against the model's, in the gradient's units (g is over 4, the
+      // energy over RestScale).
+      const double actual = (result.Energy - energy) * this->RestScale / 4.0;
+      const double ratio = step.ModelDecrease < 0.0 ? actual / -step.ModelDecrease : -1.0;
+      if (ratio < 0.25)
+      {
+        radius *= 0.25;
+      }
+      else if (ratio > 0.75 && step.OnBoundary)
+      {
+        radius *= 2.0;
+      }
+    }
+    if (!(energy < result.Energy))
+    {
+      next = this->Global(work.Rotations, work.Patch, work, loop, nullptr);
+      energy = this->Evaluate(next, iterate, loop);
+    }
+    // Not even a local-global step lowers it: the iterate is the minimum, to rounding. It
+    // stays (evaluated again, so that the workspace fits it).
+    const bool stalled = !(energy < result.Energy);
+    if (stalled)
+    {
+      next = x;
+      energy = std::min(result.Energy, this->Evaluate(next, iterate, loop));
+    }
+    iterate.Points.swap(work.Candidate);
+    work.Rotations.swap(work.CandidateRotations);
+    iterate.Rotations.swap(work.CandidateQuaternions);
+    x.swap(next);
+    if (log.Stop(result, energy, std::min(result.Iterations + 1, ConvergenceWindow), stalled))
+    {
+      break;
+    }
+  }
+  return result;
 }
 }

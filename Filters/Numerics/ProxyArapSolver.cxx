@@ -108,6 +108,7 @@ ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
   }
   ArapOptions settle = options;
   settle.Extrapolate = false; // the handles are where the drag left them
+  settle.Newton = true; // local-global iterations crawl at this size (ArapOptions::Newton)
   const ArapResult result = this->Fine.Solve(handleMaps, this->FineIterate, settle, loop);
   roiPositions = this->FineIterate.Points;
   this->LastMaps = handleMaps;

@@ -23,6 +23,10 @@ struct SparseCholesky::Backend
   // cannot (a distributed factor).
   virtual bool Refactor(const SparseMatrix&) { return false; }
   virtual void SetTolerance(double) {}
+  virtual Eigen::MatrixXd Precondition(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const
+  {
+    return this->Solve(rhs, loop);
+  }
 };
 
 namespace
@@ -156,6 +160,14 @@ struct MultigridBackend : SparseCholesky::Backend
     return this->Last.leftCols(rhs.cols());
   }
   void SetTolerance(double tolerance) override { this->Tolerance = tolerance; }
+  Eigen::MatrixXd Precondition(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const override
+  {
+    AlgebraicMultigrid::Block b = AlgebraicMultigrid::Block::Zero(rhs.rows(), 3);
+    b.leftCols(rhs.cols()) = rhs;
+    AlgebraicMultigrid::Block z;
+    this->Hierarchy.Precondition(b, z, loop);
+    return z.leftCols(rhs.cols());
+  }
 };
 
 std::unique_ptr<SparseCholesky::Backend> SetUpMultigrid(
@@ -272,6 +284,11 @@ void SparseCholesky::SetIterativeTolerance(double tolerance)
 Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const
 {
   return this->Impl->Solve(rhs, loop);
+}
+
+Eigen::MatrixXd SparseCholesky::Precondition(const Eigen::MatrixXd& rhs, const ParallelFor& loop) const
+{
+  return this->Impl->Precondition(rhs, loop);
 }
 
 bool SparseCholesky::IsFactorized() const
