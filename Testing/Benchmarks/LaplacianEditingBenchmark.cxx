@@ -18,7 +18,8 @@
 // library that CHOLMOD runs on.
 //
 // In the as-rigid-as-possible mode, the energies (the drag's last step, the release and the
-// converged shape at the same pose, 1000 more iterations) are measured on the output itself,
+// converged shape at the same pose, 1000 more iterations, or Newton steps where a large region
+// settles, which stop at a 1e-8 decrease) are measured on the output itself,
 // with the core's EditMeasures (clamped cotangent weights), independently of the filter's own
 // figure, which a large region's drag gives for its proxy.
 //
