@@ -4,7 +4,6 @@
 #include "LandmarkPairs.h"
 #include "LandmarkSource.h"
 
-#include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"

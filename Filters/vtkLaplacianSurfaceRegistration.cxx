@@ -2,8 +2,8 @@
 
 #include "EditPipeline.h"
 #include "FitSource.h"
-#include "LandmarkPairs.h"
 #include "FoldGuard.h"
+#include "LandmarkPairs.h"
 #include "Stopwatch.h"
 #include "TargetMatcher.h"
 

@@ -95,8 +95,8 @@ struct ArapOptions
   /// on the plain energy (no points, prior, bending or smoothed rotations; the others iterate
   /// plainly). Why: a local-global iteration is a Newton step whose Hessian leaves out how the
   /// rotations turn with the points, and along the region's soft bending modes that is most
-  /// of it: a 610k-vertex region still stood at 1.6 times its converged energy after 30
-  /// iterations, and needs on the order of a thousand. Each step here solves with the full
+  /// of it: a 152k-vertex region stood at 2.0 times the minimum's energy after 30 iterations,
+  /// and at 1.7 after 1000 (Documentation/performance.md). Each step here solves with the full
   /// Hessian, L minus the rotations' derivative (the polar decomposition's, through each
   /// ring's stretch), by conjugate gradients preconditioned by L (the global step's own
   /// solver: the factor, or one multigrid cycle), stopped at negative curvature, then a line
