@@ -99,8 +99,8 @@ struct ArapOptions
   /// and at 1.7 after 1000 (Documentation/performance.md). Each step here solves with the full
   /// Hessian, L minus the rotations' derivative (the polar decomposition's, through each
   /// ring's stretch), by conjugate gradients preconditioned by L (the global step's own
-  /// solver: the factor, or one multigrid cycle), stopped at negative curvature, then a line
-  /// search on the energy (a local-global step where it fails).
+  /// solver: the factor, or one multigrid cycle) within a trust region, which shrinks where
+  /// the energy does not fall (a local-global step after three tries).
   bool Newton = false;
   /// The solve is a drag step: a large region's proxy iterates (ProxyArapSolver), where a
   /// solve that is not one settles the full-resolution shape.
