@@ -48,6 +48,99 @@ Matrix3 Edges(const Points& x, const Tetrahedra& tets, int row)
   return edges;
 }
 
+// The passes over tetrahedra below work on plain scalars: Eigen's 3x3 products, on SSE2, store
+// single values and load them back in pairs, and those store-forwarding stalls cost the drag
+// step's passes more than their arithmetic did (perf; Documentation/volumes.md).
+using Edges3 = double[3][3]; // [i][k]: coordinate i of edge k
+
+// The edges x_k+1 - x_0 of the tetrahedron `tet` among row-major points `x`.
+inline void LoadEdges(const double* x, const int* tet, Edges3& edges)
+{
+  const double* origin = x + 3 * tet[0];
+  for (int k = 0; k < 3; ++k)
+  {
+    const double* corner = x + 3 * tet[k + 1];
+    for (int i = 0; i < 3; ++i)
+    {
+      edges[i][k] = corner[i] - origin[i];
+    }
+  }
+}
+
+inline double Determinant(const Edges3& m)
+{
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+    m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+// V (|J|^2 + |J^-1|^2 - 6) for J = edges B (B column-major; both of positive determinant), and
+// if `corners` is given, its gradient at the four corners (column-major 3 x 4).
+inline double SymmetricDirichlet(const Edges3& edges, const double* B, double volume, double* corners)
+{
+  double J[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      J[i][j] = edges[i][0] * B[3 * j] + edges[i][1] * B[3 * j + 1] + edges[i][2] * B[3 * j + 2];
+    }
+  }
+  // G = J^-T: the cofactors over the determinant.
+  double G[3][3];
+  G[0][0] = J[1][1] * J[2][2] - J[1][2] * J[2][1];
+  G[0][1] = J[1][2] * J[2][0] - J[1][0] * J[2][2];
+  G[0][2] = J[1][0] * J[2][1] - J[1][1] * J[2][0];
+  G[1][0] = J[0][2] * J[2][1] - J[0][1] * J[2][2];
+  G[1][1] = J[0][0] * J[2][2] - J[0][2] * J[2][0];
+  G[1][2] = J[0][1] * J[2][0] - J[0][0] * J[2][1];
+  G[2][0] = J[0][1] * J[1][2] - J[0][2] * J[1][1];
+  G[2][1] = J[0][2] * J[1][0] - J[0][0] * J[1][2];
+  G[2][2] = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+  const double inverseDeterminant = 1.0 / (J[0][0] * G[0][0] + J[0][1] * G[0][1] + J[0][2] * G[0][2]);
+  double norms = -6.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      G[i][j] *= inverseDeterminant;
+      norms += J[i][j] * J[i][j] + G[i][j] * G[i][j];
+    }
+  }
+  if (!corners)
+  {
+    return volume * norms;
+  }
+  // dE/dJ = 2 V (J - G G^T G), and dE/dedges = dE/dJ B^T.
+  double S[3][3]; // G G^T
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = i; j < 3; ++j)
+    {
+      S[i][j] = S[j][i] = G[i][0] * G[j][0] + G[i][1] * G[j][1] + G[i][2] * G[j][2];
+    }
+  }
+  double dJ[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      dJ[i][j] = 2.0 * volume * (J[i][j] - (S[i][0] * G[0][j] + S[i][1] * G[1][j] + S[i][2] * G[2][j]));
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    corners[i] = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double d = dJ[i][0] * B[k] + dJ[i][1] * B[3 + k] + dJ[i][2] * B[6 + k];
+      corners[3 * (k + 1) + i] = d;
+      corners[i] -= d;
+    }
+  }
+  return volume * norms;
+}
+
 // Appends the solutions of a + b t + c t^2 = 0 (c may be 0) to roots[count].
 void QuadraticRoots(double a, double b, double c, double* roots, int& count)
 {
@@ -154,17 +247,31 @@ double InjectiveDeformation::TetrahedronScaledJacobian(
 {
   // Every corner sees the same determinant (six times the volume), with its orientation, over
   // the product of its three edges' lengths: the smallest corner is the one of the longest
-  // edges (of the shortest, if inverted).
-  // Squared, so that one square root is taken: the quality pass runs at every drag step.
-  const double ab = (b - a).squaredNorm(), ac = (c - a).squaredNorm(), ad = (d - a).squaredNorm();
-  const double bc = (c - b).squaredNorm(), bd = (d - b).squaredNorm(), cd = (d - c).squaredNorm();
-  const double lengths[4] = { ab * ac * ad, ab * bc * bd, ac * bc * cd, ad * bd * cd };
+  // edges (of the shortest, if inverted). Squared, so that one square root is taken, and on
+  // scalars (see Edges3): the quality pass runs at every drag step.
+  const double x[12] = { a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2] };
+  double squared[4][4];
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = i + 1; j < 4; ++j)
+    {
+      const double dx = x[3 * j] - x[3 * i], dy = x[3 * j + 1] - x[3 * i + 1],
+                   dz = x[3 * j + 2] - x[3 * i + 2];
+      squared[i][j] = squared[j][i] = dx * dx + dy * dy + dz * dz;
+    }
+  }
+  const double lengths[4] = { squared[0][1] * squared[0][2] * squared[0][3],
+    squared[0][1] * squared[1][2] * squared[1][3], squared[0][2] * squared[1][2] * squared[2][3],
+    squared[0][3] * squared[1][3] * squared[2][3] };
   const auto [shortest, longest] = std::minmax_element(lengths, lengths + 4);
   if (*shortest <= 0.0)
   {
     return 0.0;
   }
-  const double determinant = (b - a).dot((c - a).cross(d - a));
+  const int tet[4] = { 0, 1, 2, 3 };
+  Edges3 edges;
+  LoadEdges(x, tet, edges);
+  const double determinant = Determinant(edges);
   return std::sqrt(2.0) * determinant / std::sqrt(determinant > 0.0 ? *longest : *shortest);
 }
 
@@ -379,14 +486,11 @@ double InjectiveDeformation::Energy(
   loop(0, m, [&](int first, int last) {
     for (int c = first; c < last; ++c)
     {
-      const Matrix3 edges = Edges(x, this->Tets, c);
-      if (!(edges.determinant() > 0.0))
-      {
-        energies[c] = Infinity;
-        continue;
-      }
-      const Matrix3 J = edges * this->RestInverse[c];
-      energies[c] = this->Volume[c] * (J.squaredNorm() + J.inverse().squaredNorm() - 6.0);
+      Edges3 edges;
+      LoadEdges(x.data(), this->Tets.data() + 4 * c, edges);
+      energies[c] = Determinant(edges) > 0.0
+        ? SymmetricDirichlet(edges, this->RestInverse[c].data(), this->Volume[c], nullptr)
+        : Infinity;
     }
   });
   double energy = 0.0;
@@ -436,22 +540,17 @@ double InjectiveDeformation::Gradient(const Positions& points, const Positions& 
   loop(0, m, [&](int first, int last) {
     for (int c = first; c < last; ++c)
     {
-      const Matrix3& B = this->RestInverse[c];
-      const Matrix3 edges = Edges(x, this->Tets, c);
-      if (!(edges.determinant() > 0.0))
+      Edges3 edges;
+      LoadEdges(x.data(), this->Tets.data() + 4 * c, edges);
+      double* corners = local.row(c).data(); // column-major 3 x 4: one column a corner
+      if (!(Determinant(edges) > 0.0))
       {
         energies[c] = Infinity;
-        local.row(c).setZero();
+        std::fill(corners, corners + 12, 0.0);
         continue;
       }
-      const Matrix3 J = edges * B;
-      const Matrix3 inverseT = J.inverse().transpose();
-      energies[c] = this->Volume[c] * (J.squaredNorm() + inverseT.squaredNorm() - 6.0);
-      const Matrix3 dJ = 2.0 * this->Volume[c] * (J - inverseT * inverseT.transpose() * inverseT);
-      const Matrix3 dEdges = dJ * B.transpose(); // column k: the gradient at corner k + 1
-      Eigen::Map<Eigen::Matrix<double, 3, 4>> corners(local.row(c).data());
-      corners.rightCols<3>() = dEdges;
-      corners.col(0) = -dEdges.rowwise().sum();
+      energies[c] =
+        SymmetricDirichlet(edges, this->RestInverse[c].data(), this->Volume[c], corners);
     }
   });
   // Each unknown gathers its corners' gradients: no two threads write one row.
@@ -490,15 +589,19 @@ double InjectiveDeformation::LargestSafeStep(const Positions& points,
   loop(0, m, [&](int first, int last) {
     for (int c = first; c < last; ++c)
     {
-      const Matrix3 D = Edges(x, this->Tets, c);
-      const Matrix3 P = Edges(direction, this->Tets, c);
-      // det(D + t P), column by column.
-      const Vector3 d0 = D.col(0), d1 = D.col(1), d2 = D.col(2);
-      const Vector3 p0 = P.col(0), p1 = P.col(1), p2 = P.col(2);
-      const double a0 = d0.dot(d1.cross(d2));
-      const double a1 = p0.dot(d1.cross(d2)) + d0.dot(p1.cross(d2)) + d0.dot(d1.cross(p2));
-      const double a2 = d0.dot(p1.cross(p2)) + p0.dot(d1.cross(p2)) + p0.dot(p1.cross(d2));
-      const double a3 = p0.dot(p1.cross(p2));
+      Edges3 D, P;
+      LoadEdges(x.data(), this->Tets.data() + 4 * c, D);
+      LoadEdges(direction.data(), this->Tets.data() + 4 * c, P);
+      // det(D + t P) = det[d0 + t p0, d1 + t p1, d2 + t p2], with a column's cross products.
+      const auto column = [](const Edges3& m, int k) { return Vector3(m[0][k], m[1][k], m[2][k]); };
+      const Vector3 d0 = column(D, 0), d1 = column(D, 1), d2 = column(D, 2);
+      const Vector3 p0 = column(P, 0), p1 = column(P, 1), p2 = column(P, 2);
+      const Vector3 d12 = d1.cross(d2), p12 = p1.cross(p2);
+      const Vector3 mixed = d1.cross(p2) + p1.cross(d2);
+      const double a0 = d0.dot(d12);
+      const double a1 = p0.dot(d12) + d0.dot(mixed);
+      const double a2 = d0.dot(p12) + p0.dot(mixed);
+      const double a3 = p0.dot(p12);
       steps[c] = SmallestPositiveRoot(a0, a1, a2, a3, below);
     }
   });
