@@ -245,18 +245,24 @@ double InjectiveDeformation::CornerScaledJacobian(
 double InjectiveDeformation::TetrahedronScaledJacobian(
   const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d)
 {
+  return TetrahedronScaledJacobian(a.data(), b.data(), c.data(), d.data());
+}
+
+double InjectiveDeformation::TetrahedronScaledJacobian(
+  const double* a, const double* b, const double* c, const double* d)
+{
   // Every corner sees the same determinant (six times the volume), with its orientation, over
   // the product of its three edges' lengths: the smallest corner is the one of the longest
   // edges (of the shortest, if inverted). Squared, so that one square root is taken, and on
   // scalars (see Edges3): the quality pass runs at every drag step.
-  const double x[12] = { a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2] };
+  const double* points[4] = { a, b, c, d };
   double squared[4][4];
   for (int i = 0; i < 4; ++i)
   {
     for (int j = i + 1; j < 4; ++j)
     {
-      const double dx = x[3 * j] - x[3 * i], dy = x[3 * j + 1] - x[3 * i + 1],
-                   dz = x[3 * j + 2] - x[3 * i + 2];
+      const double dx = points[j][0] - points[i][0], dy = points[j][1] - points[i][1],
+                   dz = points[j][2] - points[i][2];
       squared[i][j] = squared[j][i] = dx * dx + dy * dy + dz * dz;
     }
   }
@@ -268,9 +274,14 @@ double InjectiveDeformation::TetrahedronScaledJacobian(
   {
     return 0.0;
   }
-  const int tet[4] = { 0, 1, 2, 3 };
   Edges3 edges;
-  LoadEdges(x, tet, edges);
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      edges[i][k] = points[k + 1][i] - a[i];
+    }
+  }
   const double determinant = Determinant(edges);
   return std::sqrt(2.0) * determinant / std::sqrt(determinant > 0.0 ? *longest : *shortest);
 }

@@ -107,6 +107,9 @@ public:
   /// times its smallest corner's.
   static double TetrahedronScaledJacobian(
     const Vector3& a, const Vector3& b, const Vector3& c, const Vector3& d);
+  /// The same on four points' coordinates, three contiguous values each.
+  static double TetrahedronScaledJacobian(
+    const double* a, const double* b, const double* c, const double* d);
 
 
 private:

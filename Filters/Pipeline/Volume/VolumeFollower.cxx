@@ -291,7 +291,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
       const int t = this->Zone.CellTets[k];
       if (t >= 0)
       {
-        const auto row = [&](int i) -> Vector3 { return this->Placed.row(this->Zone.Tets(t, i)); };
+        const auto row = [&](int i) { return this->Placed.row(this->Zone.Tets(t, i)).data(); };
         this->ZoneQuality[k] =
           InjectiveDeformation::TetrahedronScaledJacobian(row(0), row(1), row(2), row(3));
         bool leftShort = false;
