@@ -133,10 +133,13 @@ void RefineBatch(Batch& batch, int steps)
     {
       norm[l] = std::sqrt(squared[l]);
     }
-    q[0] = nw / norm;
-    q[1] = nx / norm;
-    q[2] = ny / norm;
-    q[3] = nz / norm;
+    // A lane done keeps its quaternion to the bit: normalizing it again would make a rotation
+    // depend on how long its batch's other lanes took, and so on how threads split the loop.
+    const Lanes keep = done, take = one - done;
+    q[0] = keep * w + take * (nw / norm);
+    q[1] = keep * x + take * (nx / norm);
+    q[2] = keep * y + take * (ny / norm);
+    q[3] = keep * z + take * (nz / norm);
     const Lanes converged = (o0 * o0 + o1 * o1 + o2 * o2 < 1e-14) ? concave : zero;
     done = done > converged ? done : converged;
   }

@@ -20,7 +20,8 @@ bool RefineClosestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q, int 
 
 /// RefineClosestRotation on `count` matrices at once, vectorized across them (the local step
 /// refines one rotation per vertex); converged[i] receives rotation i's result. Every rotation
-/// takes the same steps as alone, to rounding.
+/// takes the same steps as alone, to rounding, and its result does not depend on the others in
+/// its batch, to the bit (so not on how threads split a loop).
 void RefineClosestRotations(
   const Eigen::Matrix3d* a, Eigen::Quaterniond* q, bool* converged, int count, int steps = 4);
 
