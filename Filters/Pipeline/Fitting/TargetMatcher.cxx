@@ -41,6 +41,9 @@ constexpr double RimSlant = 0.1;
 // Nearer the target than this fraction of its diagonal, a point is on it.
 constexpr double OnSurfaceFraction = 1e-6;
 
+// A closest point with a barycentric weight below this lies on the triangle's edge or vertex.
+constexpr double OnEdgeWeight = 1e-9;
+
 // A cloud's normal at a point is the direction of least spread of its nearest points.
 constexpr int CloudNeighbours = 12;
 
@@ -200,7 +203,7 @@ std::string TargetMatcher::SetTarget(vtkPointSet* target)
       this->Surface->GetCellPoints(c, count, corners);
       std::copy(corners, corners + 3, this->Corners[c].begin());
     }
-    this->Surface->BuildCells();
+    this->Surface->BuildLinks();
     this->Cells.resize(MatchThreads());
     for (auto& locator : this->Cells)
     {
@@ -229,6 +232,7 @@ void TargetMatcher::Closest(
     int subId = 0;
     double squared = 0.0;
     this->Cells[locator]->FindClosestPoint(point, closest, cell, cellId, subId, squared);
+    cellId = this->FirstOfEquallyNear(point, cellId, closest, squared, cell);
     // Beyond a rim, the closest point is on the rim's edge, off the perpendicular: the point lies
     // where the target has no surface. On a rim triangle's face it is a match like any other.
     double face[3];
@@ -266,6 +270,55 @@ void TargetMatcher::Closest(
   this->Cloud->GetPoint(nearest, closest);
   this->Normals->GetTuple(nearest, normal);
   rim = false;
+}
+
+vtkIdType TargetMatcher::FirstOfEquallyNear(const double point[3], vtkIdType cellId,
+  double closest[3], double& squared, vtkGenericCell* cell) const
+{
+  const std::array<vtkIdType, 3>& corners = this->Corners[cellId];
+  double a[3], b[3], c[3], weights[3];
+  this->Surface->GetPoint(corners[0], a);
+  this->Surface->GetPoint(corners[1], b);
+  this->Surface->GetPoint(corners[2], c);
+  Barycentric(closest, a, b, c, weights);
+  vtkIdType on[3]; // the corners of the vertex or edge the closest point lies on
+  int onCount = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (weights[k] > OnEdgeWeight)
+    {
+      on[onCount++] = corners[k];
+    }
+  }
+  if (onCount == 3 || onCount == 0)
+  {
+    return cellId; // inside the triangle (or a degenerate one): no other is as near
+  }
+  vtkIdType count = 0;
+  vtkIdType* around = nullptr;
+  this->Surface->GetPointCells(on[0], count, around);
+  vtkIdType best = cellId;
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const std::array<vtkIdType, 3>& other = this->Corners[around[k]];
+    const bool shares = std::all_of(on, on + onCount,
+      [&](vtkIdType v) { return std::find(other.begin(), other.end(), v) != other.end(); });
+    if (!shares || around[k] == cellId)
+    {
+      continue;
+    }
+    double candidate[3], pcoords[3], cellWeights[3], candidateSquared = 0.0;
+    int subId = 0;
+    this->Surface->GetCell(around[k], cell);
+    cell->EvaluatePosition(point, candidate, subId, pcoords, candidateSquared, cellWeights);
+    if (candidateSquared < squared || (candidateSquared == squared && around[k] < best))
+    {
+      best = around[k];
+      squared = candidateSquared;
+      std::copy(candidate, candidate + 3, closest);
+    }
+  }
+  return best;
 }
 
 double TargetMatcher::DistanceTo(const double point[3]) const

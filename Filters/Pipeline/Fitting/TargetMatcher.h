@@ -25,6 +25,7 @@
 #include <vector>
 
 class vtkDataArray;
+class vtkGenericCell;
 class vtkPointSet;
 class vtkPolyData;
 class vtkStaticCellLocator;
@@ -81,6 +82,12 @@ private:
   // beyond a rim, found with the surface's locator `locator`.
   void Closest(const double point[3], double closest[3], double normal[3], bool& rim,
     std::size_t locator = 0) const;
+  // Of the triangles around the vertex or edge that `closest` (on `cellId`) lies on, the nearest
+  // to `point`, the lowest id among equals, with its closest point and squared distance. The
+  // locator returns any of equally near triangles (its bins' cells come from a parallel sort), and
+  // a match must not depend on the threads' schedule.
+  vtkIdType FirstOfEquallyNear(const double point[3], vtkIdType cellId, double closest[3],
+    double& squared, vtkGenericCell* cell) const;
 
   vtkSmartPointer<vtkPolyData> Surface; // null for a cloud
   vtkSmartPointer<vtkPointSet> Cloud;
