@@ -52,6 +52,11 @@ def foam_entries(path):
     return text[header.end():], int(header.group(1))
 
 
+def foam_points(path):
+    body, count = foam_entries(path)
+    return np.array([p.split() for p in re.findall(r"\(([^()]+)\)", body)[:count]], float)
+
+
 def dictionary(name, body, cls="dictionary"):
     return f"FoamFile {{ version 2.0; format ascii; class {cls}; object {name}; }}\n{body}"
 
@@ -103,8 +108,7 @@ def fix_boundary(case, rest_points, edited_points):
     body, _ = foam_entries(f"{case}/constant/polyMesh/faces")
     faces = re.findall(r"\d+\(([\d ]+)\)", body)[start:start + count]
     order = list(dict.fromkeys(int(v) for face in faces for v in face.split()))
-    body, points = foam_entries(f"{case}/constant/polyMesh/points")
-    imported = np.array([p.split() for p in re.findall(r"\(([^()]+)\)", body)[:points]], float)
+    imported = foam_points(f"{case}/constant/polyMesh/points")
     if np.abs(imported - rest_points).max() > 1e-9 * np.ptp(rest_points):
         raise RuntimeError("vtkUnstructuredToFoam renumbered the points")
     moves = edited_points[order] - rest_points[order]
@@ -172,8 +176,7 @@ def main():
         iterations = [int(n) for n in re.findall(r"No Iterations (\d+)", log)]
         set_write_format(case, "ascii")
         foam(case, "foamFormatConvert -time 1")
-        body, points = foam_entries(f"{case}/1/polyMesh/points")
-        moved = np.array([p.split() for p in re.findall(r"\(([^()]+)\)", body)[:points]], float)
+        moved = foam_points(f"{case}/1/polyMesh/points")
         flipped = np.sign(signed_volumes(moved, tetrahedra)) != np.sign(
             signed_volumes(rest_points, tetrahedra))
         peak = int(re.search(r"peak (\d+) kB", log).group(1)) / 1024.0

@@ -232,7 +232,9 @@ void TargetMatcher::Closest(
     int subId = 0;
     double squared = 0.0;
     this->Cells[locator]->FindClosestPoint(point, closest, cell, cellId, subId, squared);
-    cellId = this->FirstOfEquallyNear(point, cellId, closest, squared, cell);
+    double weights[3]; // the closest point's on the cell's corners
+    this->CornerWeights(cellId, closest, weights);
+    cellId = this->FirstOfEquallyNear(point, cellId, closest, squared, weights, cell);
     // Beyond a rim, the closest point is on the rim's edge, off the perpendicular: the point lies
     // where the target has no surface. On a rim triangle's face it is a match like any other.
     double face[3];
@@ -246,11 +248,7 @@ void TargetMatcher::Closest(
     // The normal to match with: the corners' normals, interpolated, smoother than the face's on
     // a noisy scan.
     const std::array<vtkIdType, 3>& corners = this->Corners[cellId];
-    double a[3], b[3], c[3], weights[3], cornerNormal[3];
-    this->Surface->GetPoint(corners[0], a);
-    this->Surface->GetPoint(corners[1], b);
-    this->Surface->GetPoint(corners[2], c);
-    Barycentric(closest, a, b, c, weights);
+    double cornerNormal[3];
     normal[0] = normal[1] = normal[2] = 0.0;
     for (int k = 0; k < 3; ++k)
     {
@@ -272,15 +270,20 @@ void TargetMatcher::Closest(
   rim = false;
 }
 
-vtkIdType TargetMatcher::FirstOfEquallyNear(const double point[3], vtkIdType cellId,
-  double closest[3], double& squared, vtkGenericCell* cell) const
+void TargetMatcher::CornerWeights(vtkIdType cellId, const double p[3], double weights[3]) const
 {
   const std::array<vtkIdType, 3>& corners = this->Corners[cellId];
-  double a[3], b[3], c[3], weights[3];
+  double a[3], b[3], c[3];
   this->Surface->GetPoint(corners[0], a);
   this->Surface->GetPoint(corners[1], b);
   this->Surface->GetPoint(corners[2], c);
-  Barycentric(closest, a, b, c, weights);
+  Barycentric(p, a, b, c, weights);
+}
+
+vtkIdType TargetMatcher::FirstOfEquallyNear(const double point[3], vtkIdType cellId,
+  double closest[3], double& squared, double weights[3], vtkGenericCell* cell) const
+{
+  const std::array<vtkIdType, 3>& corners = this->Corners[cellId];
   vtkIdType on[3]; // the corners of the vertex or edge the closest point lies on
   int onCount = 0;
   for (int k = 0; k < 3; ++k)
@@ -317,6 +320,10 @@ vtkIdType TargetMatcher::FirstOfEquallyNear(const double point[3], vtkIdType cel
       squared = candidateSquared;
       std::copy(candidate, candidate + 3, closest);
     }
+  }
+  if (best != cellId)
+  {
+    this->CornerWeights(best, closest, weights);
   }
   return best;
 }

@@ -82,12 +82,14 @@ private:
   // beyond a rim, found with the surface's locator `locator`.
   void Closest(const double point[3], double closest[3], double normal[3], bool& rim,
     std::size_t locator = 0) const;
-  // Of the triangles around the vertex or edge that `closest` (on `cellId`) lies on, the nearest
-  // to `point`, the lowest id among equals, with its closest point and squared distance. The
-  // locator returns any of equally near triangles (its bins' cells come from a parallel sort), and
-  // a match must not depend on the threads' schedule.
+  // The barycentric weights of `p` on triangle `cellId`'s corners.
+  void CornerWeights(vtkIdType cellId, const double p[3], double weights[3]) const;
+  // Of the triangles around the vertex or edge that `closest` (on `cellId`, with `weights` on its
+  // corners) lies on, the nearest to `point`, the lowest id among equals, with its closest point,
+  // squared distance and weights. The locator returns any of equally near triangles (its bins'
+  // cells come from a parallel sort), and a match must not depend on the threads' schedule.
   vtkIdType FirstOfEquallyNear(const double point[3], vtkIdType cellId, double closest[3],
-    double& squared, vtkGenericCell* cell) const;
+    double& squared, double weights[3], vtkGenericCell* cell) const;
 
   vtkSmartPointer<vtkPolyData> Surface; // null for a cloud
   vtkSmartPointer<vtkPointSet> Cloud;
