@@ -5,6 +5,7 @@
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
 //     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--linear]
 //     [--no-extrapolation] [--absolute] [--large-region N] [--proxy-nodes N]
+//     [--drag-iterations K]
 //     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
@@ -164,6 +165,7 @@ struct Options
   int ConvergedIterations = 1000;
   int LargeRegion = -1; // the filter's default
   int ProxyNodes = -1;
+  int DragIterations = -1;
   bool Help = false;
 };
 
@@ -195,6 +197,7 @@ vertices or of a flat grid of about N points (unit spacing, handle at its centre
                           (1000; 0: none, no ratios)
   --large-region N        LargeRegionVertices: larger regions drag on a proxy (0: never)
   --proxy-nodes N         ProxyNodes: about how many nodes a large region's proxy has
+  --drag-iterations K     DragARAPIterations: at most K iterations a drag step (2)
   --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
   --help                  this text
 )";
@@ -271,6 +274,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.LargeRegion = std::atoi(next().c_str());
     else if (arg == "--proxy-nodes")
       options.ProxyNodes = std::atoi(next().c_str());
+    else if (arg == "--drag-iterations")
+      options.DragIterations = std::atoi(next().c_str());
     else if (arg[0] != '-' && options.Mesh.empty())
       options.Mesh = arg;
     else
@@ -309,6 +314,7 @@ struct Measurement
   int ReleaseIterations = 0;
   double Release = 0.0;
   double ReleasedEnergy = 0.0;
+  double ConvergedEnergy = 0.0;
 
   std::string Json() const
   {
@@ -340,6 +346,10 @@ struct Measurement
       if (this->ReleasedEnergy > 0.0)
       {
         json << ", \"released_energy_over_converged\": " << this->ReleasedEnergy;
+      }
+      if (this->ConvergedEnergy > 0.0)
+      {
+        json << ", \"converged_energy\": " << this->ConvergedEnergy;
       }
     }
     return json.str();
@@ -426,6 +436,10 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   {
     filter->SetProxyNodes(options.ProxyNodes);
   }
+  if (options.DragIterations > 0)
+  {
+    filter->SetDragARAPIterations(options.DragIterations);
+  }
   vtkNew<vtkTransform> transform;
   filter->SetHandleTransform(transform);
   filter->Update();
@@ -486,6 +500,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     }
     result.ARAPEnergyRatio = converged > 0.0 ? dragged / converged : 0.0;
     result.ReleasedEnergy = converged > 0.0 ? released / converged : 0.0;
+    result.ConvergedEnergy = converged;
   }
   result.Output = filter->GetOutput();
   return result;
