@@ -1,5 +1,7 @@
 #include "CholmodFactor.h"
 
+#include "SimdClones.h"
+
 #include <cholmod.h>
 
 #include <algorithm>
@@ -446,19 +448,13 @@ namespace
 // once rather than once a column.
 constexpr int ColumnBlock = 4;
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define LAPLACIAN_EDITING_SOLVE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define LAPLACIAN_EDITING_SOLVE_CLONES
-#endif
-
 #if defined(__GNUC__)
 // Four right-hand sides side by side fill one vector of doubles (AVX2 where the processor has
 // it: GCC builds these twice and the loader picks), so that each factor value updates a row in
 // one multiply-add. Three columns are solved as four, the fourth zero.
 using Row = double __attribute__((vector_size(32), aligned(8)));
 
-LAPLACIAN_EDITING_SOLVE_CLONES
+LAPLACIAN_EDITING_SIMD_CLONES
 void SubtractRows4(const double* const* columns, int block, const double (&x)[ColumnBlock][4],
   const int* rows, int begin, int end, double* target, const int* slot)
 {
@@ -476,7 +472,7 @@ void SubtractRows4(const double* const* columns, int block, const double (&x)[Co
   }
 }
 
-LAPLACIAN_EDITING_SOLVE_CLONES
+LAPLACIAN_EDITING_SIMD_CLONES
 void GatherRows4(const double* const* columns, int block, const int* rows, int begin, int end,
   const double* y, double (&sums)[ColumnBlock][4])
 {

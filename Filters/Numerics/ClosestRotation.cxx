@@ -1,5 +1,7 @@
 #include "ClosestRotation.h"
 
+#include "SimdClones.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -59,12 +61,6 @@ namespace
 // processor has it (GCC builds the function for both and the loader picks), two SSE2 halves
 // otherwise.
 using Lanes = double __attribute__((vector_size(32)));
-
-#if !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define LAPLACIAN_EDITING_SIMD_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define LAPLACIAN_EDITING_SIMD_CLONES
-#endif
 
 // Four refinements, as plain arrays (vectors are not passed across the two builds).
 struct Batch
