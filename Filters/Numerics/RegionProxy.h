@@ -94,6 +94,7 @@ private:
   // Per fine ROI row: its handle group (-1: free), rest position, and its moving nodes' rows
   // (of the proxy's region) and weights, compressed.
   std::vector<int> HandleGroups;
+  std::vector<int> HandleRows; // the rows of handle groups, in order
   Positions Rest;
   std::vector<int> WeightOffsets;
   std::vector<int> WeightNodes;

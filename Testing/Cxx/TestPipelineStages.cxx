@@ -476,6 +476,16 @@ TEST(OutputArray, KeepsTheRangesVTKCachesRightWithoutAPassOverTheArray)
   ASSERT_EQ(output.Update(rest, { 6 }, 5, write), array);
   expectCarried(array, "after a write that moves an extreme inside again");
   expectFreshRanges(array, "after a write that moves an extreme inside again");
+  // Values that are not finite: the plain and the finite ranges part.
+  value = std::numeric_limits<double>::infinity();
+  ASSERT_EQ(output.Update(rest, { 6 }, 6, write), array);
+  expectFreshRanges(array, "after an infinite write");
+  value = std::numeric_limits<double>::quiet_NaN();
+  ASSERT_EQ(output.Update(rest, { 6 }, 7, write), array);
+  expectFreshRanges(array, "after a NaN write");
+  value = 2.0;
+  ASSERT_EQ(output.Update(rest, { 6 }, 8, write), array);
+  expectFreshRanges(array, "after a finite write again");
 }
 
 TEST(OutputArray, KeepsThePointsRangesThroughTheirModified)

@@ -232,12 +232,27 @@ le::RegionRequest RegionSelector::Request(vtkPolyData* rest,
   }
   else
   {
-    region.CenterVertex =
-      surface.GetMesh()->FindNearestVertex(surface.Normalize(parameters.HandleCenter));
+    region.CenterVertex = this->NearestVertex(surface, parameters.HandleCenter);
     region.HandleRadius = parameters.HandleRadius * surface.GetScale();
     region.ROIRadius = parameters.ROIRadius * surface.GetScale();
   }
   return region;
+}
+
+int RegionSelector::NearestVertex(const SurfaceAdapter& surface, const double center[3]) const
+{
+  // The graph is shared and never changed: the same one, owned by the same control block,
+  // which the weak reference keeps from being reused, has the same nearest vertex.
+  const std::shared_ptr<const le::SurfaceMesh> mesh = surface.GetMesh();
+  const le::Vector3 point = surface.Normalize(center);
+  const bool same = !this->NearestMesh.owner_before(mesh) && !mesh.owner_before(this->NearestMesh);
+  if (!same || point != this->NearestPoint)
+  {
+    this->NearestMesh = mesh;
+    this->NearestPoint = point;
+    this->NearestId = mesh->FindNearestVertex(point);
+  }
+  return this->NearestId;
 }
 
 void RegionSelector::Warn(vtkObject* reporter, const le::RegionRequest& request,

@@ -17,6 +17,7 @@
 #include "vtkSmartPointer.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 
 class vtkDataArray;
@@ -91,6 +92,11 @@ public:
     const Parameters& parameters, double diagonal) const;
 
 private:
+  // The vertex of `surface` nearest `center` (mesh units), found again only for another
+  // centre or graph: each update asks, and a scan of a 2M-vertex graph is a millisecond of a
+  // drag step.
+  int NearestVertex(const SurfaceAdapter& surface, const double center[3]) const;
+
   vtkDataArray* Labels = nullptr;
   // A selection's labels and what they were made from (selection time, input content time).
   vtkSmartPointer<vtkIntArray> SelectedLabels;
@@ -100,6 +106,10 @@ private:
   Reach LastReach;
   double ReachKey[5] = { -1.0, -1.0, 0.0, 0.0, 0.0 };
   double ReachExtent = 0.0;
+  // NearestVertex's last answer and its question.
+  mutable std::weak_ptr<const LaplacianEditing::SurfaceMesh> NearestMesh;
+  mutable LaplacianEditing::Vector3 NearestPoint = LaplacianEditing::Vector3::Zero();
+  mutable int NearestId = -1;
 };
 
 }

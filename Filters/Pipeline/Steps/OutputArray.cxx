@@ -183,7 +183,10 @@ private:
 
   // The extremes in each family, (min, max) pairs, of the tuples `ids`; none give
   // (+inf, -inf). A drag writes the same hundreds of thousands of tuples at every step, so the
-  // pass runs in parallel on the array's own value type, not through virtual GetTuple.
+  // pass runs in parallel on the array's own value type, not through virtual GetTuple, and
+  // keeps its extremes in registers: the finite families are the plain ones wherever a chunk
+  // holds only finite values, and a norm's extremes are those of its square (a 610k-vertex
+  // region's drag step spent 4 ms here with every family updated in memory per value).
   static std::array<Extremes, Families> Measure(vtkDataArray* array, const std::vector<vtkIdType>& ids)
   {
     const int components = array->GetNumberOfComponents();
@@ -203,35 +206,80 @@ private:
     };
     // Chunks of tuples, each with its own extremes, merged at the end.
     constexpr vtkIdType Chunk = 16384;
+    constexpr int FastComponents = 4;
     const vtkIdType count = static_cast<vtkIdType>(ids.size());
     std::vector<std::array<Extremes, Families>> chunks((count + Chunk - 1) / Chunk, extremes);
     auto measure = [&](auto* typed) {
       const auto tuples = vtk::DataArrayTupleRange(typed);
+      // Every family, value by value: for chunks that hold a value that is not finite.
+      auto measureEach = [&](std::array<Extremes, Families>& chunk, vtkIdType first, vtkIdType last) {
+        for (vtkIdType k = first; k < last; ++k)
+        {
+          const auto tuple = tuples[ids[k]];
+          double squared = 0.0;
+          bool finite = true;
+          for (int i = 0; i < components; ++i)
+          {
+            const double value = static_cast<double>(tuple[i]);
+            include(chunk[0], 2 * i, value, value);
+            if (std::isfinite(value))
+            {
+              include(chunk[1], 2 * i, value, value);
+            }
+            finite = finite && std::isfinite(value);
+            squared += value * value;
+          }
+          include(chunk[2], 0, std::sqrt(squared), std::sqrt(squared));
+          if (finite)
+          {
+            include(chunk[3], 0, std::sqrt(squared), std::sqrt(squared));
+          }
+        }
+      };
       vtkSMPTools::For(0, static_cast<vtkIdType>(chunks.size()), 1, [&](vtkIdType begin, vtkIdType end) {
         for (vtkIdType c = begin; c < end; ++c)
         {
           std::array<Extremes, Families>& chunk = chunks[c];
-          for (vtkIdType k = c * Chunk; k < std::min(count, (c + 1) * Chunk); ++k)
+          const vtkIdType first = c * Chunk, last = std::min(count, (c + 1) * Chunk);
+          if (components > FastComponents)
+          {
+            measureEach(chunk, first, last);
+            continue;
+          }
+          double low[FastComponents], high[FastComponents];
+          std::fill(low, low + FastComponents, inf);
+          std::fill(high, high + FastComponents, -inf);
+          double lowSquared = inf, highSquared = -inf, sum = 0.0;
+          for (vtkIdType k = first; k < last; ++k)
           {
             const auto tuple = tuples[ids[k]];
             double squared = 0.0;
-            bool finite = true;
             for (int i = 0; i < components; ++i)
             {
               const double value = static_cast<double>(tuple[i]);
-              include(chunk[0], 2 * i, value, value);
-              if (std::isfinite(value))
-              {
-                include(chunk[1], 2 * i, value, value);
-              }
-              finite = finite && std::isfinite(value);
+              low[i] = std::min(low[i], value);
+              high[i] = std::max(high[i], value);
               squared += value * value;
             }
-            include(chunk[2], 0, std::sqrt(squared), std::sqrt(squared));
-            if (finite)
+            lowSquared = std::min(lowSquared, squared);
+            highSquared = std::max(highSquared, squared);
+            sum += squared; // not finite exactly where a value is not
+          }
+          if (!std::isfinite(sum))
+          {
+            measureEach(chunk, first, last);
+            continue;
+          }
+          for (int i = 0; i < components; ++i)
+          {
+            for (int f : { 0, 1 })
             {
-              include(chunk[3], 0, std::sqrt(squared), std::sqrt(squared));
+              include(chunk[f], 2 * i, low[i], high[i]);
             }
+          }
+          for (int f : { 2, 3 })
+          {
+            include(chunk[f], 0, std::sqrt(lowSquared), std::sqrt(highSquared));
           }
         }
       });
