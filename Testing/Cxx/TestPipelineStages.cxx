@@ -488,6 +488,65 @@ TEST(OutputArray, KeepsTheRangesVTKCachesRightWithoutAPassOverTheArray)
   expectFreshRanges(array, "after a finite write again");
 }
 
+TEST(OutputArray, KeepsTheRangesItsWriterMeasured)
+{
+  // A drag's writes: the same 3,000 of 40,000 float tuples each time, written by SetTuples,
+  // which measures them as it writes them (two chunks' worth of SMP ranges at least). Required:
+  // after every write the ranges VTK caches are those of the array as stored (float), with
+  // values beyond the extremes, back inside them, infinite and NaN.
+  vtkNew<vtkFloatArray> rest;
+  rest->SetNumberOfComponents(3);
+  rest->SetNumberOfTuples(40000);
+  for (vtkIdType i = 0; i < 40000; ++i)
+  {
+    rest->SetTuple3(i, 1e-3 * i, -2e-3 * i, std::sin(1e-3 * i));
+  }
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 100; i < 40000; i += 13)
+  {
+    ids.push_back(i);
+  }
+  lep::OutputArray output;
+  double offset = 0.0;
+  auto write = [&](vtkDataArray* array) {
+    lep::OutputArray::SetTuples<3>(array, ids, [&](vtkIdType i, double* p) {
+      p[0] = 1e-3 * ids[i] + offset + 1e-9; // rounded as a float stores it
+      p[1] = -2e-3 * ids[i] * (1.0 + offset);
+      p[2] = i == 7 ? offset : 0.5;
+    }, output.WriteExtremes());
+  };
+  auto expectFreshRanges = [](vtkDataArray* array, const std::string& when) {
+    vtkNew<vtkFloatArray> fresh;
+    fresh->DeepCopy(array);
+    for (int c = -1; c < 3; ++c)
+    {
+      double kept[2], computed[2];
+      array->GetRange(kept, c);
+      fresh->GetRange(computed, c);
+      EXPECT_EQ(kept[0], computed[0]) << when << ", component " << c;
+      EXPECT_EQ(kept[1], computed[1]) << when << ", component " << c;
+      array->GetFiniteRange(kept, c);
+      fresh->GetFiniteRange(computed, c);
+      EXPECT_EQ(kept[0], computed[0]) << when << ", finite component " << c;
+      EXPECT_EQ(kept[1], computed[1]) << when << ", finite component " << c;
+    }
+  };
+  double range[2];
+  rest->GetRange(range, 0);
+  rest->GetFiniteRange(range, 0);
+  vtkDataArray* array = nullptr;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::uint64_t key = 0;
+  for (double value : { 0.0, 0.25, 100.0, -3.0, inf, -inf, std::nan(""), 2.0, 0.0 })
+  {
+    offset = value;
+    vtkDataArray* written = output.Update(rest, ids, ++key, write);
+    ASSERT_TRUE(!array || written == array) << "written in place";
+    array = written;
+    expectFreshRanges(array, "after a write of " + std::to_string(value));
+  }
+}
+
 TEST(OutputArray, KeepsThePointsRangesThroughTheirModified)
 {
   // vtkPoints::Modified marks its array modified too (from VTK 9.2), which drops the cache: the

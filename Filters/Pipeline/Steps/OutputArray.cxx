@@ -1,6 +1,7 @@
 #include "OutputArray.h"
 
 #include "CachedRangePoints.h"
+#include "TupleExtremes.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkDataArray.h"
@@ -35,7 +36,7 @@ class CachedRanges
 {
 public:
   using Extremes = std::vector<double>;
-  static constexpr int Families = 4; // component ranges, finite ones, norm range, finite one
+  static constexpr int Families = TupleExtremes::Families;
 
   // Before the write: the ranges cached, and the changing tuples' ranges (measured unless
   // given as `known`).
@@ -46,7 +47,8 @@ public:
     vtkInformation* info = array->HasInformation() ? array->GetInformation() : nullptr;
     for (int f = 0; f < Families; ++f)
     {
-      this->Cached[f] = info && Get(info, f, this->Components, this->Ranges[f]);
+      this->Cached[f] = info && this->Components <= TupleExtremes::MaximumComponents &&
+        Get(info, f, this->Components, this->Ranges[f]);
     }
     if (known && known->size() == Families)
     {
@@ -91,11 +93,11 @@ public:
   }
 
   // After the write and Modified(): the ranges that are still known, with the extremes of the
-  // tuples left alone if given. Returns the changed tuples' extremes.
+  // tuples left alone if given. Returns the changed tuples' extremes, measured unless given.
   std::vector<Extremes> Restore(vtkDataArray* array, const std::vector<vtkIdType>& changed,
-    const std::vector<Extremes>* unchanged)
+    const std::vector<Extremes>* unchanged, const TupleExtremes* measured)
   {
-    const std::array<Extremes, Families> written = Measure(array, changed);
+    const std::array<Extremes, Families> written = measured ? measured->Get() : Measure(array, changed);
     for (int f = 0; f < Families; ++f)
     {
       if (!this->Cached[f])
@@ -183,103 +185,30 @@ private:
 
   // The extremes in each family, (min, max) pairs, of the tuples `ids`; none give
   // (+inf, -inf). A drag writes the same hundreds of thousands of tuples at every step, so the
-  // pass runs in parallel on the array's own value type, not through virtual GetTuple, and
-  // keeps its extremes in registers: the finite families are the plain ones wherever a chunk
-  // holds only finite values, and a norm's extremes are those of its square (a 610k-vertex
-  // region's drag step spent 4 ms here with every family updated in memory per value).
+  // pass runs in parallel on the array's own value type, not through virtual GetTuple.
   static std::array<Extremes, Families> Measure(vtkDataArray* array, const std::vector<vtkIdType>& ids)
   {
     const int components = array->GetNumberOfComponents();
-    const double inf = std::numeric_limits<double>::infinity();
-    std::array<Extremes, Families> extremes;
-    for (int f = 0; f < Families; ++f)
+    if (components > TupleExtremes::MaximumComponents)
     {
-      extremes[f].assign(Norm(f) ? 2 : 2 * components, inf);
-      for (std::size_t i = 1; i < extremes[f].size(); i += 2)
-      {
-        extremes[f][i] = -inf;
-      }
+      return TupleExtremes().Get(); // not measured; Capture caches nothing for such arrays
     }
-    auto include = [](Extremes& e, std::size_t i, double low, double high) {
-      e[i] = std::min(e[i], low);
-      e[i + 1] = std::max(e[i + 1], high);
-    };
     // Chunks of tuples, each with its own extremes, merged at the end.
     constexpr vtkIdType Chunk = 16384;
-    constexpr int FastComponents = 4;
     const vtkIdType count = static_cast<vtkIdType>(ids.size());
-    std::vector<std::array<Extremes, Families>> chunks((count + Chunk - 1) / Chunk, extremes);
+    std::vector<TupleExtremes> chunks((count + Chunk - 1) / Chunk, TupleExtremes(components));
     auto measure = [&](auto* typed) {
       const auto tuples = vtk::DataArrayTupleRange(typed);
-      // Every family, value by value: for chunks that hold a value that is not finite.
-      auto measureEach = [&](std::array<Extremes, Families>& chunk, vtkIdType first, vtkIdType last) {
-        for (vtkIdType k = first; k < last; ++k)
-        {
-          const auto tuple = tuples[ids[k]];
-          double squared = 0.0;
-          bool finite = true;
-          for (int i = 0; i < components; ++i)
-          {
-            const double value = static_cast<double>(tuple[i]);
-            include(chunk[0], 2 * i, value, value);
-            if (std::isfinite(value))
-            {
-              include(chunk[1], 2 * i, value, value);
-            }
-            finite = finite && std::isfinite(value);
-            squared += value * value;
-          }
-          include(chunk[2], 0, std::sqrt(squared), std::sqrt(squared));
-          if (finite)
-          {
-            include(chunk[3], 0, std::sqrt(squared), std::sqrt(squared));
-          }
-        }
-      };
+      using Value = typename decltype(tuples)::ComponentType;
       vtkSMPTools::For(0, static_cast<vtkIdType>(chunks.size()), 1, [&](vtkIdType begin, vtkIdType end) {
+        Value values[TupleExtremes::MaximumComponents];
         for (vtkIdType c = begin; c < end; ++c)
         {
-          std::array<Extremes, Families>& chunk = chunks[c];
-          const vtkIdType first = c * Chunk, last = std::min(count, (c + 1) * Chunk);
-          if (components > FastComponents)
-          {
-            measureEach(chunk, first, last);
-            continue;
-          }
-          double low[FastComponents], high[FastComponents];
-          std::fill(low, low + FastComponents, inf);
-          std::fill(high, high + FastComponents, -inf);
-          double lowSquared = inf, highSquared = -inf, sum = 0.0;
-          for (vtkIdType k = first; k < last; ++k)
+          for (vtkIdType k = c * Chunk; k < std::min(count, (c + 1) * Chunk); ++k)
           {
             const auto tuple = tuples[ids[k]];
-            double squared = 0.0;
-            for (int i = 0; i < components; ++i)
-            {
-              const double value = static_cast<double>(tuple[i]);
-              low[i] = std::min(low[i], value);
-              high[i] = std::max(high[i], value);
-              squared += value * value;
-            }
-            lowSquared = std::min(lowSquared, squared);
-            highSquared = std::max(highSquared, squared);
-            sum += squared; // not finite exactly where a value is not
-          }
-          if (!std::isfinite(sum))
-          {
-            measureEach(chunk, first, last);
-            continue;
-          }
-          for (int i = 0; i < components; ++i)
-          {
-            for (int f : { 0, 1 })
-            {
-              include(chunk[f], 2 * i, low[i], high[i]);
-            }
-          }
-          for (int f : { 2, 3 })
-          {
-            include(chunk[f], 0, std::sqrt(lowSquared), std::sqrt(highSquared));
+            std::copy(tuple.begin(), tuple.end(), values);
+            chunks[c].Add(values);
           }
         }
       });
@@ -288,17 +217,12 @@ private:
     {
       measure(array);
     }
-    for (const std::array<Extremes, Families>& chunk : chunks)
+    TupleExtremes all(components);
+    for (const TupleExtremes& chunk : chunks)
     {
-      for (int f = 0; f < Families; ++f)
-      {
-        for (std::size_t i = 0; i + 1 < extremes[f].size(); i += 2)
-        {
-          include(extremes[f], i, chunk[f][i], chunk[f][i + 1]);
-        }
-      }
+      all.Merge(chunk);
     }
-    return extremes;
+    return all.Get();
   }
 
   int Components = 0;
@@ -474,7 +398,11 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
     buffer.Unchanged = CachedRanges::MeasureUnchanged(buffer.Array, changing);
     buffer.UnchangedOutside = changing;
   }
+  this->Written.Reset(buffer.Array->GetNumberOfComponents());
   write(buffer.Array);
+  // Where only this write's tuples change, once each, and the writer measured them all.
+  const bool measured = sameTuples && ids.size() == changing.size() &&
+    this->Written.GetCount() == static_cast<long long>(ids.size());
   buffer.Written = ids;
   buffer.Key = key;
   buffer.Array->Modified();
@@ -482,8 +410,8 @@ void OutputArray::Refresh(Buffer& buffer, vtkDataArray* rest,
   {
     buffer.Points->Modified(); // which, from VTK 9.2, marks the array modified too
   }
-  buffer.WrittenExtremes = ranges.Restore(
-    buffer.Array, changing, buffer.UnchangedOutside == changing ? &buffer.Unchanged : nullptr);
+  buffer.WrittenExtremes = ranges.Restore(buffer.Array, changing,
+    buffer.UnchangedOutside == changing ? &buffer.Unchanged : nullptr, measured ? &this->Written : nullptr);
   // Those of `ids` alone where `changing` held no other tuple.
   buffer.WrittenTime = !derived || sameTuples ? buffer.Array->GetMTime() : 0;
 }

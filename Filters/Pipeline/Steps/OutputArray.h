@@ -17,8 +17,11 @@
 #ifndef LaplacianEditing_Pipeline_OutputArray_h
 #define LaplacianEditing_Pipeline_OutputArray_h
 
+#include "TupleExtremes.h"
+
 #include "vtkArrayDispatch.h"
 #include "vtkDataArrayRange.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
@@ -60,29 +63,50 @@ public:
   /// every i, in parallel and on the array's own value type: a virtual SetTuple per tuple costs
   /// a large region's drag step more than its solve's back-substitution (performance.md,
   /// "Measured choices").
+  /// With `measured`, the extremes of the values written, as the array stores them, are added
+  /// to it in the same pass (an update's write passed to its own WriteExtremes() keeps the
+  /// array's cached ranges without passing over its tuples again).
   template <int Components, typename Value>
-  static void SetTuples(vtkDataArray* array, const std::vector<vtkIdType>& ids, const Value& value)
+  static void SetTuples(vtkDataArray* array, const std::vector<vtkIdType>& ids, const Value& value,
+    TupleExtremes* measured = nullptr)
   {
     auto write = [&](auto* typed) {
       auto tuples = vtk::DataArrayTupleRange<Components>(typed);
+      using Stored = typename decltype(tuples)::ComponentType;
+      vtkSMPThreadLocal<TupleExtremes> extremes{ TupleExtremes{ Components } };
       vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
         double values[Components];
+        Stored stored[Components];
+        TupleExtremes& local = extremes.Local();
         for (vtkIdType i = begin; i < end; ++i)
         {
           value(i, values);
           auto tuple = tuples[ids[i]];
           for (int c = 0; c < Components; ++c)
           {
-            tuple[c] = values[c];
+            stored[c] = static_cast<Stored>(values[c]);
+            tuple[c] = stored[c];
+          }
+          if (measured)
+          {
+            local.Add(stored);
           }
         }
       });
+      for (auto it = extremes.begin(); measured && it != extremes.end(); ++it)
+      {
+        measured->Merge(*it);
+      }
     };
     if (!vtkArrayDispatch::Dispatch::Execute(array, write))
     {
       write(array);
     }
   }
+
+  /// Where this array's current update lets its writer measure what it writes (SetTuples'
+  /// `measured`); valid inside the update's write only.
+  TupleExtremes* WriteExtremes() { return &this->Written; }
 
   /// How many whole copies of a rest array the updates made.
   vtkIdType GetNumberOfCopies() const { return this->Copies; }
@@ -120,6 +144,7 @@ private:
     std::uint64_t key, const Writer& write);
 
   std::vector<Buffer> Buffers;
+  TupleExtremes Written; // what the current update's writer measured
   Holders PipelineHolders;
   vtkIdType Copies = 0;
   vtkIdType Uses = 0;

@@ -20,6 +20,9 @@
 #include "vtkSignedCharArray.h"
 #include "vtkVariant.h"
 
+#include <algorithm>
+#include <numeric>
+
 
 namespace le = LaplacianEditing;
 
@@ -91,7 +94,9 @@ void OutputWriter::Write(
   const std::uint64_t key = ++this->Writes;
   const std::vector<vtkIdType>& moved = edit ? edit->Moved->Ids : none;
   output->SetPoints(this->Points.Update(rest->GetPoints(), moved, key, [&](vtkDataArray* points) {
-    OutputArray::SetTuples<3>(points, moved, [&](vtkIdType i, double* p) {
+    this->OrderByRows(*edit);
+    OutputArray::SetTuples<3>(points, this->RowOrderedIds, [&](vtkIdType j, double* p) {
+      const int i = this->RowOrdered[j];
       le::Vector3 position =
         edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
       if (!edit->Moved->Offsets.empty())
@@ -99,7 +104,7 @@ void OutputWriter::Write(
         position += edit->Moved->Offsets[i];
       }
       std::copy(position.data(), position.data() + 3, p);
-    });
+    }, this->Points.WriteExtremes());
   }));
   const NormalRefresher* normals = edit ? edit->Normals : nullptr;
   if (vtkDataArray* pointNormals = RestNormals(rest->GetPointData()))
@@ -137,6 +142,25 @@ void OutputWriter::Write(
   {
     pointData->SetActiveScalars("EditRole"); // a default mapper then shows the roles
   }
+}
+
+void OutputWriter::OrderByRows(const Edit& edit)
+{
+  if (this->RowOrderVersion == edit.RegionVersion && this->RowOrdered.size() == edit.Moved->Ids.size())
+  {
+    return;
+  }
+  const std::vector<int>& rows = edit.Moved->Rows;
+  this->RowOrdered.resize(rows.size());
+  std::iota(this->RowOrdered.begin(), this->RowOrdered.end(), 0);
+  std::stable_sort(this->RowOrdered.begin(), this->RowOrdered.end(),
+    [&](int a, int b) { return rows[a] < rows[b]; });
+  this->RowOrderedIds.resize(rows.size());
+  for (std::size_t j = 0; j < rows.size(); ++j)
+  {
+    this->RowOrderedIds[j] = edit.Moved->Ids[this->RowOrdered[j]];
+  }
+  this->RowOrderVersion = edit.RegionVersion;
 }
 
 vtkDataArray* OutputWriter::UpdateRoles(vtkIdType count, const Edit* edit)

@@ -62,6 +62,11 @@ public:
 
 private:
   vtkDataArray* UpdateRoles(vtkIdType count, const Edit* edit);
+  // The moved points in the order of their solution rows (RowOrdered: their indices in
+  // edit.Moved; RowOrderedIds: their ids), once per region. The points' write reads the
+  // solution in that order: in the ids' order it read three columns at random a point, the
+  // largest part of a 610k-vertex region's write.
+  void OrderByRows(const Edit& edit);
 
   OutputArray Points;
   OutputArray PointNormals;
@@ -72,6 +77,9 @@ private:
   vtkSmartPointer<vtkSignedCharArray> FixedRoles;
   vtkSmartPointer<vtkLookupTable> RoleColors;
   std::uint64_t Writes = 0;
+  std::vector<int> RowOrdered;
+  std::vector<vtkIdType> RowOrderedIds;
+  std::uint64_t RowOrderVersion = ~std::uint64_t(0);
 };
 
 }
