@@ -289,7 +289,7 @@ public:
   /**
    * As-rigid-as-possible mode: about how many nodes a large region's proxy has (100 to
    * 1000000); more follow the full-resolution shape more closely during a drag, at the cost of
-   * a larger region's drag step. Default 20000.
+   * a larger region's drag step. Default 10000.
    */
   vtkSetClampMacro(ProxyNodes, int, 100, 1000000);
   vtkGetMacro(ProxyNodes, int);
@@ -435,7 +435,7 @@ protected:
   double HandleWeight = 100.0;
   double AnchorWeight = 1.0;
   int LargeRegionVertices = 60000;
-  int ProxyNodes = 20000;
+  int ProxyNodes = 10000;
   vtkTypeBool GenerateEditRoles = 1;
   vtkTypeBool RoleColors = 1;
 

@@ -240,7 +240,8 @@ public:
 
   /**
    * As-rigid-as-possible mode: the most iterations per update while Dragging (1 to 10000;
-   * never more than ARAPIterations). Default 2.
+   * never more than ARAPIterations). A large region's proxy, whose iterations cost less, runs
+   * twice as many (Documentation/how-it-works.md, "Regions of any size"). Default 2.
    */
   vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
   vtkGetMacro(DragARAPIterations, int);

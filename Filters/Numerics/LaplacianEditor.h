@@ -84,7 +84,7 @@ struct RotationOptions
   /// of about ProxyNodes nodes and settles by multigrid (ProxyArapSolver), where a smaller one
   /// factors its system; regions held by points are always factored.
   int LargeRegionVertices = 0;
-  int ProxyNodes = 20000;
+  int ProxyNodes = 10000;
 };
 
 /// What an Update rebuilt (bit flags).

@@ -49,7 +49,7 @@ struct VTKLAPLACIANEDITINGFILTERS_EXPORT SolverSettings
   /// As-rigid-as-possible: regions of more vertices are dragged on a proxy of about
   /// ProxyNodes nodes and settled by multigrid (0: none).
   int LargeRegionVertices = 0;
-  int ProxyNodes = 20000;
+  int ProxyNodes = 10000;
   /// The update that follows a drag: ARAPIterations in full, without the convergence test,
   /// which the slow tail a drag leaves would pass at once.
   bool Settle = false;
