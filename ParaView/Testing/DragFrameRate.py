@@ -9,8 +9,10 @@ frame first applies the handle's values, as Auto Apply does. Run in the GUI's ow
       --plugin-search-paths=build/paraview/lib/paraview-5.11/plugins/LaplacianEditing \\
       --plugins=LaplacianEditing --script=ParaView/Testing/DragFrameRate.py
 
-MESH is a file ParaView reads, or sphere:THETAxPHI for ParaView's Sphere source at those
-resolutions (sphere:2000x1002 has 2M points and carries point normals). The handle sits on point
+MESH is a file ParaView reads, sphere:THETAxPHI for ParaView's Sphere source at those
+resolutions (sphere:2000x1002 has 2M points and carries point normals), or scan:LEVELS:PATH for
+the benchmark's scan (Testing/Support/MeshReader.h's Scan: the surface Loop-subdivided LEVELS
+times, with fine bumps along its normals; scan:3:../shared/data/Armadillo.ply has 2.4M points). The handle sits on point
 0 (on a sphere, the point nearest (0.5, 0, 0), on the equator) with a radius of 3% of the
 bounding-box diagonal, or a third of the ROI radius if that is less; the ROI radius is
 ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode name (None,
@@ -32,9 +34,51 @@ import sys
 import time
 
 
+def scan(spec):
+    """MeshReader.h's Scan, on ParaView's VTK: the surface of PATH Loop-subdivided LEVELS times,
+    each point moved along its normal by 5e-4 of the diagonal times sin(kx) sin(ky) sin(kz),
+    k = 2 pi / (6e-3 of the diagonal)."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    from vtkmodules.vtkFiltersModeling import vtkLoopSubdivisionFilter
+    from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
+    from vtkmodules.vtkIOPLY import vtkPLYReader
+    levels, path = spec[len("scan:"):].split(":", 1)
+    reader = {"ply": vtkPLYReader, "obj": vtkOBJReader, "stl": vtkSTLReader}[path.rsplit(".", 1)[-1].lower()]()
+    reader.SetFileName(path)
+    reader.Update()
+    surface = vtkPolyData()
+    surface.SetPoints(reader.GetOutput().GetPoints())
+    surface.SetPolys(reader.GetOutput().GetPolys())
+    subdivide = vtkLoopSubdivisionFilter()
+    subdivide.SetInputData(surface)
+    subdivide.SetNumberOfSubdivisions(int(levels))
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(subdivide.GetOutputPort())
+    normals.SplittingOff()
+    normals.ComputeCellNormalsOff()
+    normals.Update()
+    mesh = normals.GetOutput()
+    diagonal = mesh.GetLength()
+    height, k = 5e-4 * diagonal, 2.0 * np.pi / (6e-3 * diagonal)
+    points = vtk_to_numpy(mesh.GetPoints().GetData()).astype(float)
+    along = vtk_to_numpy(mesh.GetPointData().GetNormals()).astype(float)
+    bumps = height * np.prod(np.sin(k * points), axis=1)
+    moved = points + bumps[:, None] * along
+    mesh.GetPoints().SetData(numpy_to_vtk(moved.astype(vtk_to_numpy(mesh.GetPoints().GetData()).dtype), deep=True))
+    mesh.GetPointData().Initialize()
+    return mesh
+
+
 def load(mesh_path):
     """The surface, as triangles."""
     import paraview.simple as simple
+    if mesh_path.startswith("scan:"):
+        source = simple.PVTrivialProducer()
+        source.GetClientSideObject().SetOutput(scan(mesh_path))
+        return source
     if mesh_path.startswith("sphere:"):
         theta, phi = (int(n) for n in mesh_path[len("sphere:"):].split("x"))
         return simple.Sphere(ThetaResolution=theta, PhiResolution=phi)
