@@ -29,8 +29,9 @@ constexpr double BandOverSpacing = 2.5;
 
 // Rows [first, last) of the prolongation, x = b + M b + u with (M | u) the rows' weighted sums
 // of the nodes' motions (3 x 4 column-major, 12 doubles each); coordinates by column, as
-// Positions holds them (`count` rows a column). A 610k-vertex region's drag step spent 9 ms
-// here, its 9 weights a row at 12 multiply-adds each on SSE2.
+// Positions holds them (`count` rows a column). Four doubles at a time: a 610k-vertex region's
+// drag step spent 9 ms here, its 9 weights a row at 12 scalar multiply-adds each, and a third
+// less so (Documentation/performance.md, "Large regions").
 LAPLACIAN_EDITING_SIMD_CLONES
 void BlendRows(int first, int last, const int* offsets, const int* nodes, const double* weights,
   const double* motions, const double* base, double* out, int count)
