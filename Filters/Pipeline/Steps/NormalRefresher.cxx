@@ -96,20 +96,30 @@ void NormalRefresher::Index(vtkPolyData* input, const SurfaceAdapter& surface)
   this->Cells.clear();
   this->CellVertexOffsets.assign(1, 0);
   this->CellVertices.clear();
-  const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  const auto& offsets = surface.GetPolygonOffsets();
-  const auto& corners = surface.GetPolygonConnectivity();
-  for (std::size_t c = 0; c + 1 < offsets.size(); ++c)
-  {
-    const auto first = corners.begin() + offsets[c];
-    const auto last = corners.begin() + offsets[c + 1];
-    if (std::any_of(first, last, [&](std::int64_t p) { return rowOfVertex[vertexOfPoint[p]] >= 0; }))
+  // The input's polygons once more: the graph keeps no copy of them. A polygon with a corner in
+  // the ROI was kept in the graph, so its corners all have vertices.
+  const std::vector<int> pointOfInput = surface.GetPointOfInput(input->GetNumberOfPoints());
+  auto vertexOfInput = [&](vtkIdType id) {
+    const int point = pointOfInput[id];
+    return point >= 0 ? vertexOfPoint[point] : -1;
+  };
+  vtkIdType cell = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  SurfaceAdapter::VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
+    if (std::any_of(ids, ids + size, [&](vtkIdType id) {
+          const int v = vertexOfInput(id);
+          return v >= 0 && rowOfVertex[v] >= 0;
+        }))
     {
-      this->Cells.push_back(firstPoly + surface.GetInputPolygons()[c]);
-      std::for_each(first, last, [&](std::int64_t p) { this->CellVertices.push_back(vertexOfPoint[p]); });
+      this->Cells.push_back(cell);
+      std::for_each(ids, ids + size, [&](vtkIdType id) { this->CellVertices.push_back(vertexOfInput(id)); });
       this->CellVertexOffsets.push_back(static_cast<int>(this->CellVertices.size()));
     }
-  }
+    ++cell;
+  });
+  // Kept for the region's edit: grown piecemeal, they would hold up to twice their size.
+  auto shrink = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
+  shrink(this->Points, this->PointTriangleOffsets, this->PointTriangles, this->TriangleVertices,
+    this->Cells, this->CellVertexOffsets, this->CellVertices);
 }
 
 void NormalRefresher::WritePointNormals(vtkDataArray* normals,

@@ -1,7 +1,8 @@
 // NormalRefresher: recomputes the output's point and cell normals where an edit moved the surface.
 //
 // Per region, Index finds the points whose normals the edit can change (the ROI and its ring),
-// the triangles around them, and the polygons with a corner in the ROI. The Write methods then
+// the triangles around them, and the polygons with a corner in the ROI (a pass over the input's
+// polygons). The Write methods then
 // recompute only those tuples (OutputArray keeps the rest), so all other normals
 // stay bit-identical and a handle move costs time in proportion to the region. The index refers to vertices only by
 // number, so Restrict can cut out the part that one piece of a distributed surface needs.

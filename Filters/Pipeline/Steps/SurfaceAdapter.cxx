@@ -33,10 +33,7 @@ namespace LaplacianEditing
 namespace Pipeline
 {
 
-namespace
-{
-// Calls `visit(size, ids)` on each polygon of `input`, in order.
-void VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const vtkIdType*)>& visit)
+void SurfaceAdapter::VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const vtkIdType*)>& visit)
 {
   auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
@@ -46,7 +43,6 @@ void VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const
     cells->GetCurrentCell(size, ids);
     visit(size, ids);
   }
-}
 }
 
 vtkMTimeType SurfaceAdapter::GetContentTime(vtkPolyData* surface)
@@ -262,7 +258,8 @@ std::string SurfaceAdapter::Build(
     return error;
   }
   MarkRing(input, mergeCoincidentPoints && reach.Margin >= 0.0, mark);
-  this->KeepMarkedPolygons(input, mark);
+  std::vector<std::int64_t> offsets, connectivity;
+  this->KeepMarkedPolygons(input, mark, offsets, connectivity);
   if (this->InputPoints.empty())
   {
     return "No polygon lies within reach of the handle.";
@@ -281,7 +278,7 @@ std::string SurfaceAdapter::Build(
     points[i] = this->Normalize(p);
   }
   auto mesh = std::make_shared<le::SurfaceMesh>(le::SurfaceMesh::FromPolygons(
-    points, this->Offsets, this->Connectivity, mergeCoincidentPoints, &inputPoints));
+    points, offsets, connectivity, mergeCoincidentPoints, &inputPoints));
   if (mesh->GetNumberOfTriangles() == 0)
   {
     return "The input polygons are all degenerate: no triangle has three distinct corners.";
@@ -349,7 +346,8 @@ void SurfaceAdapter::MarkRing(
   }
 }
 
-void SurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark)
+void SurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark,
+  std::vector<std::int64_t>& offsets, std::vector<std::int64_t>& connectivity)
 {
   // The polygons with a marked corner; then their corners and the points in reach, in the
   // input's order (points in reach that no polygon uses stay, as isolated vertices, so that the
@@ -357,17 +355,18 @@ void SurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<ch
   // renumbered. Three passes, because a scan's corners jump about the input's points: one pass
   // that numbered points as it met them spent a second in cache misses on a 2.4M-point scan.
   std::vector<char> kept(input->GetNumberOfPoints(), 0);
-  this->InputPolygons.clear();
+  std::vector<char> keptPolygon;
+  std::size_t polygons = 0;
   std::size_t corners = 0;
-  vtkIdType polygon = 0;
   VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
-    if (std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] != 0; }))
+    const bool keep = std::any_of(ids, ids + size, [&](vtkIdType id) { return mark[id] != 0; });
+    keptPolygon.push_back(keep);
+    if (keep)
     {
       std::for_each(ids, ids + size, [&](vtkIdType id) { kept[id] = 1; });
-      this->InputPolygons.push_back(polygon);
+      ++polygons;
       corners += static_cast<std::size_t>(size);
     }
-    ++polygon;
   });
   std::vector<int> pointOfInput(input->GetNumberOfPoints(), -1);
   this->InputPoints.clear();
@@ -379,21 +378,28 @@ void SurfaceAdapter::KeepMarkedPolygons(vtkPolyData* input, const std::vector<ch
       this->InputPoints.push_back(i);
     }
   }
-  this->Offsets.assign(1, 0);
-  this->Offsets.reserve(this->InputPolygons.size() + 1);
-  this->Connectivity.clear();
-  this->Connectivity.reserve(corners);
-  auto next = this->InputPolygons.begin();
-  polygon = 0;
+  offsets.assign(1, 0);
+  offsets.reserve(polygons + 1);
+  connectivity.clear();
+  connectivity.reserve(corners);
+  std::size_t polygon = 0;
   VisitPolygons(input, [&](vtkIdType size, const vtkIdType* ids) {
-    if (next != this->InputPolygons.end() && *next == polygon)
+    if (keptPolygon[polygon++])
     {
-      std::for_each(ids, ids + size, [&](vtkIdType id) { this->Connectivity.push_back(pointOfInput[id]); });
-      this->Offsets.push_back(static_cast<std::int64_t>(this->Connectivity.size()));
-      ++next;
+      std::for_each(ids, ids + size, [&](vtkIdType id) { connectivity.push_back(pointOfInput[id]); });
+      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
     }
-    ++polygon;
   });
+}
+
+std::vector<int> SurfaceAdapter::GetPointOfInput(vtkIdType numberOfInputPoints) const
+{
+  std::vector<int> pointOfInput(numberOfInputPoints, -1);
+  for (std::size_t i = 0; i < this->InputPoints.size(); ++i)
+  {
+    pointOfInput[this->InputPoints[i]] = static_cast<int>(i);
+  }
+  return pointOfInput;
 }
 
 std::string SurfaceAdapter::ChooseFrame(vtkPolyData* input)

@@ -5,8 +5,8 @@
 // in coordinates centred on that part's bounding box and scaled to a unit diagonal so that
 // offset or tiny models keep their precision; maps handle transforms into that frame; and, per
 // region, indexes which input points the edit moves so that writing a result touches only them.
-// Apart from one pass over the input's points and polygons, its work and memory follow the
-// part, not the input.
+// Apart from passes over the input's points and polygons, its work and memory follow the part,
+// not the input; it keeps no copy of the polygons it built the graph from.
 #ifndef LaplacianEditing_Pipeline_SurfaceAdapter_h
 #define LaplacianEditing_Pipeline_SurfaceAdapter_h
 
@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -60,15 +61,15 @@ public:
   /// (ContentTime).
   static vtkMTimeType GetContentTime(vtkPolyData* surface);
 
-  /// The input id of each point of the mesh (SurfaceMesh::GetVertexOfPoint's points), and the
-  /// index among the input's polygons of each polygon kept, with the kept polygons in mesh
-  /// point ids.
+  /// The input id of each point of the mesh (SurfaceMesh::GetVertexOfPoint's points).
   const std::vector<vtkIdType>& GetInputPoints() const { return this->InputPoints; }
-  const std::vector<vtkIdType>& GetInputPolygons() const { return this->InputPolygons; }
-  const std::vector<std::int64_t>& GetPolygonOffsets() const { return this->Offsets; }
-  const std::vector<std::int64_t>& GetPolygonConnectivity() const { return this->Connectivity; }
+  /// The mesh point of each input point, -1 for those the mesh does not hold.
+  std::vector<int> GetPointOfInput(vtkIdType numberOfInputPoints) const;
 
   std::shared_ptr<const LaplacianEditing::SurfaceMesh> GetMesh() const { return this->Mesh; }
+
+  /// Calls `visit` with the size and the point ids of each polygon of `input`, in order.
+  static void VisitPolygons(vtkPolyData* input, const std::function<void(vtkIdType, const vtkIdType*)>& visit);
 
   /// The polygons of `input` as offsets and connectivity (SurfaceMesh::FromPolygons's input).
   static void GetPolygons(
@@ -104,7 +105,10 @@ private:
   // marked corner and their points, and the core's frame (an error if the points coincide).
   static std::string MarkReach(vtkPolyData* input, const Reach& reach, std::vector<char>& mark);
   static void MarkRing(vtkPolyData* input, bool mergeCopies, std::vector<char>& mark);
-  void KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark);
+  // The kept polygons in mesh point ids: FromPolygons's input, not kept after it (at 2.4M
+  // points, 150 MB of an edit's peak memory).
+  void KeepMarkedPolygons(vtkPolyData* input, const std::vector<char>& mark,
+    std::vector<std::int64_t>& offsets, std::vector<std::int64_t>& connectivity);
   std::string ChooseFrame(vtkPolyData* input);
 
   std::shared_ptr<LaplacianEditing::SurfaceMesh> Mesh;
@@ -113,9 +117,6 @@ private:
   bool BuiltMerge = false;
   Reach BuiltReach;
   std::vector<vtkIdType> InputPoints;
-  std::vector<vtkIdType> InputPolygons;
-  std::vector<std::int64_t> Offsets;
-  std::vector<std::int64_t> Connectivity;
   LaplacianEditing::Vector3 Center = LaplacianEditing::Vector3::Zero();
   double Scale = 1.0;
   // Per region: the ROI row of each surface vertex (-1 outside), the input points in the ROI.
