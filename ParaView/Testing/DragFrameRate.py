@@ -90,7 +90,7 @@ def edit(triangles, mesh_path, fraction, mode):
     """The deformation filter on the handle's vertex, shown in an 800 x 600 view."""
     import paraview.simple as simple
     triangles.UpdatePipeline()
-    data = triangles.GetClientSideObject().GetOutput()
+    data = triangles.GetClientSideObject().GetOutputDataObject(0)  # a trivial producer has no GetOutput
     diagonal = data.GetLength()
     deform = simple.LaplacianDeformation(Input=triangles)
     handle = 0
