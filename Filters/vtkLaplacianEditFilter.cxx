@@ -71,6 +71,19 @@ void vtkLaplacianEditFilter::SetDragging(vtkTypeBool dragging)
   }
 }
 
+vtkTypeBool vtkLaplacianEditFilter::GetSettling()
+{
+  return this->Pipeline->IsSettling();
+}
+
+void vtkLaplacianEditFilter::ContinueSettling()
+{
+  if (this->Pipeline->IsSettling())
+  {
+    this->Modified();
+  }
+}
+
 vtkPolyData* vtkLaplacianEditFilter::VolumeBoundary(vtkUnstructuredGrid* grid)
 {
   const std::string error = this->Volume->Update(grid, grid->GetPoints());
@@ -122,6 +135,7 @@ lep::SolverSettings vtkLaplacianEditFilter::SharedSettings() const
   settings.Extrapolation = this->Extrapolation != 0;
   settings.Dragging = this->Dragging != 0;
   settings.DragARAPIterations = this->DragARAPIterations;
+  settings.TimeLimit = this->SettleTimeLimit;
   return settings;
 }
 
@@ -196,6 +210,7 @@ void vtkLaplacianEditFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Extrapolation: " << (this->Extrapolation ? "On" : "Off") << "\n";
   os << indent << "Dragging: " << (this->Dragging ? "On" : "Off") << "\n";
   os << indent << "DragARAPIterations: " << this->DragARAPIterations << "\n";
+  os << indent << "SettleTimeLimit: " << this->SettleTimeLimit << " s\n";
   os << indent << "Solver: " << EnumName(this->Solver, { "CHOLMOD", "SimplicialLDLT", "MUMPS" }) << "\n";
   os << indent << "Ordering: "
      << EnumName(this->Ordering, { "Automatic", "AMD", "METIS", "NestedDissection" }) << "\n";
@@ -217,4 +232,5 @@ void vtkLaplacianEditFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << next << "FactorMemory: " << this->GetFactorMemory() << " MB\n";
   os << next << "NumberOfARAPIterations: " << this->GetNumberOfARAPIterations() << "\n";
   os << next << "ARAPEnergy: " << this->GetARAPEnergy() << "\n";
+  os << next << "Settling: " << (this->Pipeline->IsSettling() ? "Yes" : "No") << "\n";
 }

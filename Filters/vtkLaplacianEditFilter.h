@@ -245,6 +245,31 @@ public:
    */
   vtkSetClampMacro(DragARAPIterations, int, 1, 10000);
   vtkGetMacro(DragARAPIterations, int);
+
+  /**
+   * As-rigid-as-possible mode: the most seconds an update outside a drag spends iterating
+   * (0 to 3600; 0: no limit), so that a client stays responsive while a large region settles
+   * (a 610k-vertex region's settle takes half a minute). An update that reaches it ends after
+   * the iteration at hand, its output a valid edit, and GetSettling() is true; each
+   * ContinueSettling() and update then runs the iterations left, from there, until none are:
+   * the same iterates as one update without a limit. A change of the motions, the region or the
+   * rotation model, or a new drag, starts afresh instead. The filter's progress spans the whole
+   * settle. vtkDeformationHandleWidget and the ParaView panel continue it between frames.
+   * Default 0.
+   */
+  vtkSetClampMacro(SettleTimeLimit, double, 0.0, 3600.0);
+  vtkGetMacro(SettleTimeLimit, double);
+
+  /**
+   * Whether the last update reached SettleTimeLimit with iterations left.
+   */
+  vtkTypeBool GetSettling();
+
+  /**
+   * Marks the filter modified while GetSettling(), so that the next update continues the
+   * settle; does nothing otherwise.
+   */
+  void ContinueSettling();
   ///@}
 
   /**
@@ -367,6 +392,7 @@ protected:
   vtkTypeBool Extrapolation = 1;
   vtkTypeBool Dragging = 0;
   int DragARAPIterations = 2;
+  double SettleTimeLimit = 0.0;
   int Solver = SOLVER_CHOLMOD;
   int Ordering = ORDERING_AUTOMATIC;
   double MaximumFactorMemory = 0.0;

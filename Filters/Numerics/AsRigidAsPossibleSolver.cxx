@@ -1336,8 +1336,13 @@ ArapResult AsRigidAsPossibleSolver::SolveNewton(ArapIterate& iterate, const Arap
   ArapIterate::Workspace& work = iterate.Work;
   Eigen::MatrixXd x = this->FreePositions(iterate.Points);
   IterationLog log(result.Energy, options, energies);
-  // The trust region's radius, in L_ff's norm: at first a local-global step's length.
-  double radius = 0.0;
+  // The trust region's radius, in L_ff's norm: at first a local-global step's length, or
+  // where the cut solve this one continues left it.
+  double& radius = work.TrustRadius;
+  if (!options.Continue)
+  {
+    radius = 0.0;
+  }
   constexpr int Retries = 3;
   constexpr double NewtonRemainder = 1e-9;
   for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)

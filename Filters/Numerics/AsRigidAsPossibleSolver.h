@@ -105,6 +105,10 @@ struct ArapOptions
   /// The solve is a drag step: a large region's proxy iterates (ProxyArapSolver), where a
   /// solve that is not one settles the full-resolution shape.
   bool Dragging = false;
+  /// The solve continues the last one on this iterate, which a Progress stop cut short (a
+  /// settle split across updates): Newton's steps keep their trust region, so that the
+  /// iterates are those of one uncut solve.
+  bool Continue = false;
   /// Called after each iteration with the share of MaximumIterations done. Returning false
   /// ends the solve at that iteration's shape (a settle of a large region takes seconds, and
   /// the user may abort it or grab again).
@@ -161,6 +165,8 @@ struct ArapIterate
     std::vector<Eigen::Matrix3d> Twists;
     std::vector<Eigen::Matrix3d> RotationChanges;
     std::vector<Vector3> PatchChange;
+    // Their trust region's radius when the last solve ended (ArapOptions::Continue).
+    double TrustRadius = 0.0;
     // Whether Rotations, Residuals and the iterate's Rotations are those of its Points: a solve
     // leaves them so, and the next one recomputes only around the handles it moves.
     bool RotationsFitPoints = false;

@@ -22,8 +22,18 @@ EditPipeline::EditPipeline(vtkAlgorithm* filter, std::function<void(unsigned lon
   // A settle's iterations report their progress, and an abort ends them at the last shape:
   // that is the output, a valid edit, and the next update continues from it. The flag is read
   // after the event too, where an observer of the event sets it.
+  // A time limit ends them the same way, and the next update continues them (IsSettling).
   this->Editor.SetProgress([this](double done) {
-    return !this->Aborted(0.9 + 0.1 * done) && !this->Filter->GetAbortExecute();
+    const int iterations = this->Solving.ARAPIterations;
+    const double settled =
+      (this->SettleIterations + done * iterations) / std::max(1, this->SettleIterations + iterations);
+    if (this->Aborted(0.9 + 0.1 * settled) || this->Filter->GetAbortExecute())
+    {
+      return false;
+    }
+    const double limit = this->Solving.TimeLimit;
+    this->OutOfTime = limit > 0.0 && this->SolveClock.Seconds() >= limit;
+    return !this->OutOfTime;
   });
 }
 
@@ -82,14 +92,34 @@ bool EditPipeline::Run(vtkPolyData* rest, vtkPolyData* output, EditSource& sourc
   {
     return false;
   }
-  SolverSettings update = settings;
-  update.Settle = this->Settle;
-  this->Settle = false;
-  if (!this->UpdateRotationModel(update) || this->Aborted(0.9))
+  EditMotions motions;
+  if (!this->Check(source.ChooseMotions(this->Surface, this->Editor.GetRegion(), motions)))
   {
     return false;
   }
-  this->Solved = this->Solve(source);
+  SolverSettings update = this->ContinueSettle(settings, motions);
+  const std::uint64_t version = this->ModelVersion;
+  bool ready = this->UpdateRotationModel(update);
+  if (ready && update.Continue && this->ModelVersion != version)
+  {
+    this->Unfinished = Continuation(); // the model was rebuilt: its settle starts afresh
+    update = this->ContinueSettle(settings, motions);
+    ready = this->UpdateRotationModel(update);
+  }
+  this->SettleIterations = update.Continue ? std::max(0, settings.ARAPIterations - update.ARAPIterations) : 0;
+  this->Unfinished = Continuation();
+  this->Settle = false;
+  if (!ready || this->Aborted(0.9))
+  {
+    return false;
+  }
+  this->Solved = this->Solve(motions, update);
+  const ArapResult& result = this->Editor.GetLastArapResult();
+  if (this->Solved && this->OutOfTime && !result.Converged && result.Iterations < update.ARAPIterations)
+  {
+    this->Unfinished = Continuation{ update.ARAPIterations - result.Iterations, update.Settle,
+      std::move(motions), this->ModelVersion };
+  }
   if (this->Solved && output)
   {
     const Stopwatch watch;
@@ -202,16 +232,33 @@ bool EditPipeline::UpdateRotationModel(const SolverSettings& settings)
   return true;
 }
 
-bool EditPipeline::Solve(EditSource& source)
+SolverSettings EditPipeline::ContinueSettle(
+  const SolverSettings& settings, const EditMotions& motions) const
+{
+  SolverSettings update = settings;
+  update.Settle = this->Settle;
+  const Continuation& cut = this->Unfinished;
+  const Positions& targets = motions.Points.Targets;
+  const Positions& cutTargets = cut.Motions.Points.Targets;
+  if (cut.Iterations > 0 && !settings.Dragging && cut.ModelVersion == this->ModelVersion &&
+    cut.Motions.Maps == motions.Maps && cut.Motions.HasPoints == motions.HasPoints &&
+    (!motions.HasPoints || (cutTargets.rows() == targets.rows() && cutTargets == targets)))
+  {
+    update.Settle = cut.Settle;
+    update.ARAPIterations = cut.Iterations;
+    update.Continue = true;
+  }
+  return update;
+}
+
+bool EditPipeline::Solve(const EditMotions& motions, const SolverSettings& settings)
 {
   const EditRegion& region = this->Editor.GetRegion();
-  EditMotions motions;
-  if (!this->Check(source.ChooseMotions(this->Surface, region, motions)))
-  {
-    return false;
-  }
-  this->Maps = std::move(motions.Maps);
+  this->Maps = motions.Maps;
+  this->Solving = settings;
+  this->OutOfTime = false;
   const Stopwatch watch;
+  this->SolveClock = watch;
   const EditStatus status = this->Editor.Solve(
     this->Maps, this->Solution, motions.HasPoints ? &motions.Points : nullptr);
   Facts& facts = this->LastFacts;
@@ -238,7 +285,15 @@ bool EditPipeline::Resolve(EditSource& source, const SolverSettings& settings)
   {
     return this->Check("No edit to solve again: a Resolve follows an update that solved.");
   }
-  this->Solved = this->UpdateRotationModel(settings) && this->Solve(source);
+  // A solve for new targets, not a settle: no time limit, and no cut settle left to continue.
+  this->Unfinished = Continuation();
+  this->SettleIterations = 0;
+  SolverSettings solve = settings;
+  solve.TimeLimit = 0.0;
+  EditMotions motions;
+  this->Solved = this->UpdateRotationModel(solve) &&
+    this->Check(source.ChooseMotions(this->Surface, this->Editor.GetRegion(), motions)) &&
+    this->Solve(motions, solve);
   return this->Solved;
 }
 
@@ -263,6 +318,10 @@ void EditPipeline::Write(
 bool EditPipeline::SetDragging(bool dragging)
 {
   this->Settle = !dragging;
+  if (dragging)
+  {
+    this->Unfinished = Continuation(); // a grab ends a cut settle; the release settles afresh
+  }
   return !dragging && !this->Previewed;
 }
 

@@ -15,6 +15,7 @@
 #include "NormalRefresher.h"
 #include "OutputWriter.h"
 #include "SolverSettings.h"
+#include "Stopwatch.h"
 #include "SurfaceAdapter.h"
 #include "vtkLaplacianEditingFiltersModule.h" // for export macro
 
@@ -98,6 +99,11 @@ public:
   /// settles it).
   bool SetDragging(bool dragging);
 
+  /// Whether the last Run's iterations reached settings.TimeLimit with some left: the next Run
+  /// for the same motions, region and rotation model continues them from its shape (one
+  /// iterate as an uncut solve's), where any other Run starts afresh.
+  bool IsSettling() const { return this->Unfinished.Iterations > 0; }
+
   /// Whether the last Run solved, and the last solve as the output writer takes it.
   bool HasSolved() const { return this->Solved; }
   OutputEdit GetEdit() const;
@@ -118,7 +124,10 @@ private:
   bool UpdateSurface(vtkPolyData* rest, const Reach& reach, bool merge);
   bool UpdateRegion(vtkPolyData* rest, EditSource& source, const SolverSettings& settings);
   bool UpdateRotationModel(const SolverSettings& settings);
-  bool Solve(EditSource& source);
+  bool Solve(const EditMotions& motions, const SolverSettings& settings);
+  // Run's settings for `motions`: the settle that TimeLimit cut short continued, if it was
+  // for them, or `settings` with a settle after a drag.
+  SolverSettings ContinueSettle(const SolverSettings& settings, const EditMotions& motions) const;
   bool Aborted(double progress);
   void ReportProgress(double progress);
 
@@ -135,6 +144,21 @@ private:
   Facts LastFacts;
   bool Solved = false;
   bool Settle = false;
+  // A settle that the time limit cut short: the iterations it has left, whether it tests
+  // convergence, and what it solved (its motions and the model's version).
+  struct Continuation
+  {
+    int Iterations = 0;
+    bool Settle = false;
+    EditMotions Motions;
+    std::uint64_t ModelVersion = 0;
+  } Unfinished;
+  // The running solve's settings (their time limit, and the iterations of its settle done
+  // before it, for the progress), its clock, and whether the limit stopped it.
+  SolverSettings Solving;
+  int SettleIterations = 0;
+  Stopwatch SolveClock;
+  bool OutOfTime = false;
   RotationMode Mode = RotationMode::None;
   bool Previewed = false;
   double ProgressStart = 0.0;

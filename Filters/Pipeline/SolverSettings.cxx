@@ -48,6 +48,7 @@ RotationOptions SolverSettings::Rotation(double regionRadius, double scale) cons
   rotation.Arap.Accelerate = this->Acceleration;
   rotation.Arap.Extrapolate = this->Extrapolation;
   rotation.Arap.Dragging = this->Dragging;
+  rotation.Arap.Continue = this->Continue;
   rotation.LargeRegionVertices = this->LargeRegionVertices;
   rotation.ProxyNodes = this->ProxyNodes;
   return rotation;

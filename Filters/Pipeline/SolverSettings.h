@@ -53,6 +53,11 @@ struct VTKLAPLACIANEDITINGFILTERS_EXPORT SolverSettings
   /// The update that follows a drag: ARAPIterations in full, without the convergence test,
   /// which the slow tail a drag leaves would pass at once.
   bool Settle = false;
+  /// As-rigid-as-possible: seconds at most of one update's iterations outside a drag (0: no
+  /// limit); the iterations left continue in the next update (EditPipeline::IsSettling).
+  double TimeLimit = 0.0;
+  /// The update continues one that TimeLimit cut short (ArapOptions::Continue).
+  bool Continue = false;
 
   /// The system's options, with a factor limit of `availableMemory` megabytes where
   /// MaximumFactorMemory is automatic.

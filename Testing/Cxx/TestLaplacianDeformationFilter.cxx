@@ -404,6 +404,84 @@ TEST(Filter, ALargeRegionsSettleReportsProgressStopsWhereAbortedAndConvergesOnTh
   EXPECT_LT(apart, 1e-4);
 }
 
+TEST(Filter, ALargeRegionsSettleSplitByATimeLimitEndsOnTheUncutSettlesShape)
+{
+  // The 9.6k-vertex region made large, dragged and released twice over: once settled in one
+  // update (12 Newton steps), once with a SettleTimeLimit that every step reaches, continued
+  // update by update while GetSettling(). Required: one step an update, as many as the uncut
+  // settle's; each update's output a valid edit (the handle met to 1e-9 of the diagonal, the
+  // outside bit for bit); progress increasing over the whole settle, within (0.9, 1]; the
+  // last output the uncut settle's (1e-12 of the diagonal: the same iterates); and
+  // ContinueSettling() leaves a filter that is not settling unmodified.
+  auto input = BumpyPlane(160);
+  vtkSmartPointer<vtkLaplacianDeformationFilter> filters[2];
+  for (auto& filter : filters)
+  {
+    filter = ConvergedArapEdit(input, 1000);
+    filter->SetARAPIterations(12);
+    filter->SetHandleTransform(Translation(-0.1, 0.05, 0.05));
+    filter->Update();
+    filter->SetHandleTransform(Translation(0.05, 0.0, 0.15));
+    filter->DraggingOn();
+    filter->Update();
+    filter->DraggingOff();
+  }
+  vtkLaplacianDeformationFilter* uncut = filters[0];
+  vtkLaplacianDeformationFilter* cut = filters[1];
+  uncut->Update();
+  EXPECT_FALSE(uncut->GetSettling());
+  const int steps = uncut->GetNumberOfARAPIterations();
+  ASSERT_GT(steps, 2);
+
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&progress);
+  observer->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    const double done = *static_cast<double*>(data);
+    if (done > 0.9 && done < 1.0) // the settle's, where each update also reports its end, 1
+    {
+      static_cast<std::vector<double>*>(client)->push_back(done);
+    }
+  });
+  cut->AddObserver(vtkCommand::ProgressEvent, observer);
+  cut->SetSettleTimeLimit(1e-9);
+  int updates = 0;
+  do
+  {
+    cut->ContinueSettling();
+    cut->Update();
+    ++updates;
+    ASSERT_EQ(cut->GetNumberOfARAPIterations(), 1) << "update " << updates;
+    vtkPolyData* output = cut->GetOutput();
+    vtkSignedCharArray* roles = Roles(output);
+    ASSERT_NE(roles, nullptr);
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      input->GetPoint(i, p);
+      output->GetPoint(i, q);
+      if (roles->GetValue(i) == vtkLaplacianDeformationFilter::ROLE_FIXED)
+      {
+        ASSERT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "point " << i;
+      }
+      else if (roles->GetValue(i) == vtkLaplacianDeformationFilter::ROLE_HANDLE)
+      {
+        const double target[3] = { p[0] + 0.05, p[1], p[2] + 0.15 };
+        ASSERT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(q, target)), 1e-9 * Diagonal(input));
+      }
+    }
+  } while (cut->GetSettling() && updates <= steps);
+  EXPECT_EQ(updates, steps);
+  EXPECT_GE(static_cast<int>(progress.size()), steps - 1) << "one event a step";
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  const double apart = MaxPointDistance(uncut->GetOutput(), cut->GetOutput()) / Diagonal(input);
+  std::printf("a settle cut into %d updates: %.2e of the diagonal from the uncut one\n", updates, apart);
+  EXPECT_LT(apart, 1e-12);
+  const vtkMTimeType before = cut->GetMTime();
+  cut->ContinueSettling();
+  EXPECT_EQ(cut->GetMTime(), before);
+}
+
 TEST(Filter, SolversAgree)
 {
   if (!vtkLaplacianDeformationFilter::IsCholmodAvailable())
