@@ -47,6 +47,8 @@ struct vtkDeformationHandleWidget::vtkInternals
   // the widget goes or moves to another interactor.
   bool PendingClick = false;
   int PressPosition[2] = { 0, 0 };
+  // The one-shot timer that continues a settle the filter's SettleTimeLimit stopped (-1: none).
+  int SettleTimer = -1;
   vtkWeakPointer<vtkRenderWindowInteractor> ClickInteractor;
   vtkNew<vtkCallbackCommand> ClickObserver;
   unsigned long ClickTags[2] = { 0, 0 };
@@ -106,6 +108,8 @@ vtkDeformationHandleWidget::vtkDeformationHandleWidget()
     this, vtkDeformationHandleWidget::GrowAction);
   this->CallbackMapper->SetCallbackMethod(vtkCommand::MouseWheelBackwardEvent,
     vtkWidgetEvent::Down, this, vtkDeformationHandleWidget::ShrinkAction);
+  this->CallbackMapper->SetCallbackMethod(vtkCommand::TimerEvent, vtkWidgetEvent::TimedOut, this,
+    vtkDeformationHandleWidget::SettleAction);
 }
 
 vtkDeformationHandleWidget::~vtkDeformationHandleWidget()
@@ -518,6 +522,40 @@ void vtkDeformationHandleWidget::EndSelectAction(vtkAbstractWidget* widget)
   self->EndInteraction();
   self->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
   self->Render();
+  self->ScheduleSettle();
+}
+
+void vtkDeformationHandleWidget::ScheduleSettle()
+{
+  // After the events waiting, so that a grab or a camera move comes first.
+  vtkInternals& internals = *this->Internals;
+  if (internals.SettleTimer < 0 && this->Interactor && this->DeformationFilter &&
+    this->DeformationFilter->GetSettling())
+  {
+    internals.SettleTimer = this->Interactor->CreateOneShotTimer(1);
+  }
+}
+
+void vtkDeformationHandleWidget::SettleAction(vtkAbstractWidget* widget)
+{
+  auto* self = static_cast<vtkDeformationHandleWidget*>(widget);
+  vtkInternals& internals = *self->Internals;
+  if (!self->CallData || internals.SettleTimer < 0 ||
+    *static_cast<int*>(self->CallData) != internals.SettleTimer)
+  {
+    return; // another observer's timer
+  }
+  internals.SettleTimer = -1;
+  self->EventCallbackCommand->SetAbortFlag(1);
+  if (self->Interacting || !self->DeformationFilter)
+  {
+    return; // a grab ended the settle
+  }
+  // Updated here, not only through the render: the output may be drawn through a copy.
+  self->DeformationFilter->ContinueSettling();
+  self->DeformationFilter->Update();
+  self->Render();
+  self->ScheduleSettle();
 }
 
 void vtkDeformationHandleWidget::PrintSelf(ostream& os, vtkIndent indent)

@@ -9,7 +9,9 @@
  * ends, so the region is refactored once per resize. A drag turns the filter's Dragging on
  * and, on release, off: in the as-rigid-as-possible mode the frames of a drag then run a few
  * iterations each, and the update after the release settles the shape with the filter's
- * ARAPIterations in full.
+ * ARAPIterations in full. Where the filter's SettleTimeLimit stops that settle, the widget
+ * continues it update by update between the interactor's events (a one-shot timer), so that a
+ * large region's release keeps the window responsive; a new grab ends it.
  *
  * Default bindings (left button), set in the event translator so that applications can rebind
  * them (GetEventTranslator()->SetTranslation(...)):
@@ -150,6 +152,10 @@ protected:
   static void GrowAction(vtkAbstractWidget* widget);
   static void ShrinkAction(vtkAbstractWidget* widget);
   void ScaleRegion(double factor);
+  // vtkWidgetEvent::TimedOut: the settle timer's continues the filter's settle (its
+  // SettleTimeLimit stopped it) by one update, and ScheduleSettle asks for the next.
+  static void SettleAction(vtkAbstractWidget* widget);
+  void ScheduleSettle();
 
   /**
    * Registers the surface picker with the picking manager (vtkInteractorObserver API).

@@ -5,7 +5,7 @@
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
 //     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--linear]
 //     [--no-extrapolation] [--absolute] [--large-region N] [--proxy-nodes N]
-//     [--drag-iterations K]
+//     [--drag-iterations K] [--settle-time-limit S]
 //     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
@@ -168,6 +168,7 @@ struct Options
   int LargeRegion = -1; // the filter's default
   int ProxyNodes = -1;
   int DragIterations = -1;
+  double SettleTimeLimit = 0.0;
   bool Help = false;
 };
 
@@ -200,6 +201,9 @@ vertices or of a flat grid of about N points (unit spacing, handle at its centre
   --large-region N        LargeRegionVertices: larger regions drag on a proxy (0: never)
   --proxy-nodes N         ProxyNodes: about how many nodes a large region's proxy has
   --drag-iterations K     DragARAPIterations: at most K iterations a drag step (2)
+  --settle-time-limit S   with --dragging, the release with SettleTimeLimit S, continued update
+                          by update (ContinueSettling) as the widget does; also its updates and
+                          the longest of them
   --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
   --help                  this text
 )";
@@ -278,6 +282,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.ProxyNodes = std::atoi(next().c_str());
     else if (arg == "--drag-iterations")
       options.DragIterations = std::atoi(next().c_str());
+    else if (arg == "--settle-time-limit")
+      options.SettleTimeLimit = std::atof(next().c_str());
     else if (arg[0] != '-' && options.Mesh.empty())
       options.Mesh = arg;
     else
@@ -314,6 +320,8 @@ struct Measurement
   double ARAPEnergyRatio = 0.0;
   // With --dragging: the update on release, its iterations and its energy over converged.
   int ReleaseIterations = 0;
+  int ReleaseUpdates = 0;
+  double LongestReleaseUpdate = 0.0;
   double Release = 0.0;
   double ReleasedEnergy = 0.0;
   double ConvergedEnergy = 0.0;
@@ -343,7 +351,9 @@ struct Measurement
       if (this->Release > 0.0)
       {
         json << ", \"release_seconds\": " << this->Release
-             << ", \"release_iterations\": " << this->ReleaseIterations;
+             << ", \"release_iterations\": " << this->ReleaseIterations
+             << ", \"release_updates\": " << this->ReleaseUpdates
+             << ", \"longest_release_update_seconds\": " << this->LongestReleaseUpdate;
       }
       if (this->ReleasedEnergy > 0.0)
       {
@@ -518,12 +528,23 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     double released = 0.0;
     if (options.Dragging)
     {
-      filter->DraggingOff(); // the release: one update with ARAPIterations
+      // The release: one update with ARAPIterations, or with a time limit the updates that
+      // continue it.
+      filter->SetSettleTimeLimit(options.SettleTimeLimit);
+      filter->DraggingOff();
       const Clock::time_point start = Clock::now();
-      filter->Update();
+      do
+      {
+        const Clock::time_point update = Clock::now();
+        filter->ContinueSettling();
+        filter->Update();
+        result.LongestReleaseUpdate = std::max(result.LongestReleaseUpdate, SecondsSince(update));
+        result.ReleaseIterations += filter->GetNumberOfARAPIterations();
+        ++result.ReleaseUpdates;
+      } while (filter->GetSettling());
       result.Release = SecondsSince(start);
       released = energyOf(filter->GetOutput());
-      result.ReleaseIterations = filter->GetNumberOfARAPIterations();
+      filter->SetSettleTimeLimit(0.0);
     }
     result.ARAPIterations = Median(arapIterations);
     result.ARAPIterationsPerMove = arapIterations;

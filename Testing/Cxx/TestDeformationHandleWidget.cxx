@@ -892,6 +892,80 @@ int ARAPDragCapsIterations()
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+int ReleaseSettlesBetweenEvents()
+{
+  // A large region (its proxy dragged, its release settled by Newton's steps) whose filter's
+  // SettleTimeLimit every step reaches: the release's update stops after one step, and the
+  // widget continues the settle between the interactor's events, one step an update, until it
+  // ends. Required: the release leaves the filter settling; the event loop then runs more
+  // updates of one step each, and the settle ends with the filter no longer settling, within
+  // 1% of the converged energy (the factored filter's, run to convergence).
+  Scene scene;
+  vtkLaplacianDeformationFilter* filter = scene.Filter;
+  filter->SetRotationModeToAsRigidAsPossible();
+  filter->SetLargeRegionVertices(200);
+  filter->SetProxyNodes(200);
+  filter->SetARAPIterations(50);
+  filter->SetSettleTimeLimit(1e-9);
+  filter->Update();
+  auto widget = scene.MakeWidget();
+
+  std::vector<int> iterations;
+  vtkNew<vtkCallbackCommand> watch;
+  watch->SetCallback([](vtkObject* caller, unsigned long, void* data, void*) {
+    auto* edit = static_cast<vtkLaplacianDeformationFilter*>(caller);
+    static_cast<std::vector<int>*>(data)->push_back(edit->GetNumberOfARAPIterations());
+  });
+  watch->SetClientData(&iterations);
+  double center[3], at[2];
+  widget->GetDeformationHandleRepresentation()->GetCurrentCenter(center);
+  scene.Display(center, at);
+  scene.Play(Drag(at, [&](double t, double p[2]) { p[0] = at[0]; p[1] = at[1] + 120.0 * t; }));
+  Check(filter->GetSettling() != 0, "the release's update stops its settle at the time limit");
+
+  // The event loop, until the settle ends (or 60 s pass).
+  filter->AddObserver(vtkCommand::EndEvent, watch);
+  vtkNew<vtkCallbackCommand> stop;
+  stop->SetClientData(scene.Interactor.Get());
+  stop->SetCallback([](vtkObject* caller, unsigned long, void* interactor, void*) {
+    auto* edit = vtkLaplacianDeformationFilter::SafeDownCast(caller);
+    if (!edit || !edit->GetSettling())
+    {
+      static_cast<vtkRenderWindowInteractor*>(interactor)->TerminateApp();
+    }
+  });
+  filter->AddObserver(vtkCommand::EndEvent, stop);
+  scene.Interactor->AddObserver(vtkCommand::TimerEvent, stop);
+  scene.Interactor->CreateOneShotTimer(60000);
+  scene.Interactor->Start();
+  filter->RemoveObserver(watch);
+
+  std::cout << "settle continued in " << iterations.size() << " updates\n";
+  Check(!filter->GetSettling(), "the settle ends");
+  Check(iterations.size() >= 2, "the event loop continues the settle");
+  bool stepwise = true;
+  for (int count : iterations)
+  {
+    stepwise = stepwise && count == 1;
+  }
+  Check(stepwise, "one step an update");
+
+  vtkNew<vtkLaplacianDeformationFilter> converged;
+  converged->SetInputData(scene.Rest);
+  converged->SetHandleCenter(filter->GetHandleCenter());
+  converged->SetHandleRadius(filter->GetHandleRadius());
+  converged->SetROIRadius(filter->GetROIRadius());
+  converged->SetHandleTransform(filter->GetHandleTransform());
+  converged->SetRotationModeToAsRigidAsPossible();
+  converged->SetARAPIterations(10000);
+  converged->SetConvergence(1e-12);
+  converged->Update();
+  const double best = converged->GetARAPEnergy();
+  std::cout << "settled energy over converged " << filter->GetARAPEnergy() / best << "\n";
+  Check(best > 0.0 && filter->GetARAPEnergy() <= 1.01 * best, "settled within 1% of converged");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 // What the window shows, as RGB bytes.
 std::vector<unsigned char> Frame(vtkRenderWindow* window)
 {
@@ -1168,6 +1242,7 @@ int main(int argc, char* argv[])
     { "ConstrainedMoveAndWheel", ConstrainedMoveAndWheel },
     { "PropertyAccessors", PropertyAccessors }, { "TwoHandleGroups", TwoHandleGroups },
     { "ARAPDragCapsIterations", ARAPDragCapsIterations },
+    { "ReleaseSettlesBetweenEvents", ReleaseSettlesBetweenEvents },
     { "PreviewDrawsWhatTheUpdateDraws", PreviewDrawsWhatTheUpdateDraws },
     { "PartMapperDrawsWhatVTKDraws", PartMapperDrawsWhatVTKDraws },
     { "VolumeDrag", VolumeDrag } };
