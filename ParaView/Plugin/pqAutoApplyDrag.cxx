@@ -1,12 +1,16 @@
 #include "pqAutoApplyDrag.h"
 
 #include "pqView.h"
+#include "vtkWeakPointer.h"
 #include "vtkClientServerStream.h"
 #include "vtkPVGeneralSettings.h"
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxy.h"
 #include "vtkSMSession.h"
 #include "vtkSMViewProxy.h"
+
+#include <QPointer>
+#include <QTimer>
 
 bool pqAutoApplyDrag::begin(vtkSMProxy* filter, pqView* view)
 {
@@ -57,10 +61,54 @@ void pqAutoApplyDrag::resumeRendering()
   this->SavedRenderOnInteraction = -1;
 }
 
-void pqAutoApplyDrag::setDragging(vtkSMProxy* filter, bool dragging)
+void pqAutoApplyDrag::continueSettle(vtkSMProxy* filter, pqView* view, QObject* context)
+{
+  vtkSMProperty* settling = filter ? filter->GetProperty("Settling") : nullptr;
+  if (this->Active || !settling || !view)
+  {
+    return;
+  }
+  filter->UpdatePropertyInformation(settling);
+  if (vtkSMPropertyHelper(settling).GetAsInt() == 0)
+  {
+    return;
+  }
+  vtkWeakPointer<vtkSMProxy> weakFilter = filter;
+  QPointer<pqView> weakView = view;
+  QTimer::singleShot(0, context, [this, weakFilter, weakView]() {
+    if (this->Active || !weakFilter || !weakView)
+    {
+      return; // a grab ended the settle
+    }
+    // As after a drag, the filter is modified on the server alone: mark the pipeline too.
+    pqAutoApplyDrag::invoke(weakFilter, "ContinueSettling");
+    weakFilter->MarkModified(weakFilter);
+    weakView->render();
+  });
+}
+
+template <typename... Arguments>
+void pqAutoApplyDrag::invoke(vtkSMProxy* filter, const char* method, Arguments... arguments)
 {
   vtkClientServerStream stream;
-  stream << vtkClientServerStream::Invoke << VTKOBJECT(filter) << "SetDragging"
-         << (dragging ? 1 : 0) << vtkClientServerStream::End;
+  stream << vtkClientServerStream::Invoke << VTKOBJECT(filter) << method;
+  (stream << ... << arguments);
+  stream << vtkClientServerStream::End;
   filter->GetSession()->ExecuteStream(filter->GetLocation(), stream, false);
+}
+
+void pqAutoApplyDrag::limitSettle(vtkSMProxy* filter)
+{
+  // Half a second: a 269k-vertex region's Newton step takes about that long, a 610k one's a
+  // second (Documentation/paraview.md).
+  constexpr double SettleSeconds = 0.5;
+  if (filter && filter->GetProperty("Settling"))
+  {
+    pqAutoApplyDrag::invoke(filter, "SetSettleTimeLimit", SettleSeconds);
+  }
+}
+
+void pqAutoApplyDrag::setDragging(vtkSMProxy* filter, bool dragging)
+{
+  pqAutoApplyDrag::invoke(filter, "SetDragging", dragging ? 1 : 0);
 }

@@ -15,6 +15,7 @@
 
 #include <QPointer>
 
+class QObject;
 class pqView;
 class vtkSMProxy;
 
@@ -32,7 +33,21 @@ public:
   /// drag or otherwise.
   void resumeRendering();
 
+  /// Gives `filter` the GUI's settle time limit (its SettleTimeLimit, set on the server alone as
+  /// Dragging is, so that a script or a saved state settles in full): an update then waits at
+  /// most about that long, or one step where a step takes longer, and continueSettle goes on.
+  static void limitSettle(vtkSMProxy* filter);
+
+  /// After an update of `filter` outside a drag, where its settle stopped at SettleTimeLimit
+  /// with iterations left (its Settling information): continues it in `view` (the filter's
+  /// ContinueSettling, then a render, which updates it) once the events waiting are handled,
+  /// unless a drag has begun by then, so that the window waits at most one update and a new
+  /// grab ends the settle. `context` owns this object. Nothing otherwise.
+  void continueSettle(vtkSMProxy* filter, pqView* view, QObject* context);
+
 private:
+  template <typename... Arguments>
+  static void invoke(vtkSMProxy* filter, const char* method, Arguments... arguments);
   static void setDragging(vtkSMProxy* filter, bool dragging);
 
   vtkSMProxy* Filter = nullptr;

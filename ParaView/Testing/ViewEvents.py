@@ -146,13 +146,15 @@ def figures(times, update, release, frames, still):
 
 def run_benchmark(main):
     """Runs a GUI benchmark's main(out), out being LAPLACIAN_BENCH_OUTPUT or standard output, and
-    ends the GUI: status 0, or 1 with the traceback printed to out."""
+    ends the GUI: status 0, or 1 with the traceback printed to out; where main returns True, its
+    callbacks in the event loop end it instead."""
     import sys
     import traceback
     out = open(os.environ["LAPLACIAN_BENCH_OUTPUT"], "w") if "LAPLACIAN_BENCH_OUTPUT" in os.environ else sys.stdout
     status = 1
     try:
-        main(out)
+        if main(out):
+            return
         status = 0
     except Exception:
         print(traceback.format_exc(), file=out, flush=True)
