@@ -7,6 +7,7 @@
 #include "vtkSMPropertyHelper.h"
 #include "vtkSMProxy.h"
 #include "vtkSMSession.h"
+#include "vtkSMSourceProxy.h"
 #include "vtkSMViewProxy.h"
 
 #include <QPointer>
@@ -39,6 +40,7 @@ bool pqAutoApplyDrag::end(bool holdRendering)
   }
   pqAutoApplyDrag::setDragging(this->Filter, false);
   this->Active = false;
+  this->SinceSettleRender.start(); // the release's update renders
   if (!holdRendering)
   {
     this->resumeRendering();
@@ -71,9 +73,16 @@ void pqAutoApplyDrag::continueSettle(vtkSMProxy* filter, pqView* view, QObject* 
   filter->UpdatePropertyInformation(settling);
   if (vtkSMPropertyHelper(settling).GetAsInt() == 0)
   {
+    if (this->SettleUndrawn)
+    {
+      this->SettleUndrawn = false;
+      view->render(); // the settled shape
+    }
     return;
   }
-  vtkWeakPointer<vtkSMProxy> weakFilter = filter;
+  // Every 3 seconds the shape so far.
+  constexpr qint64 SettleRenderMilliseconds = 3000;
+  vtkWeakPointer<vtkSMSourceProxy> weakFilter = vtkSMSourceProxy::SafeDownCast(filter);
   QPointer<pqView> weakView = view;
   QTimer::singleShot(0, context, [this, weakFilter, weakView]() {
     if (this->Active || !weakFilter || !weakView)
@@ -83,6 +92,15 @@ void pqAutoApplyDrag::continueSettle(vtkSMProxy* filter, pqView* view, QObject* 
     // As after a drag, the filter is modified on the server alone: mark the pipeline too.
     pqAutoApplyDrag::invoke(weakFilter, "ContinueSettling");
     weakFilter->MarkModified(weakFilter);
+    if (this->SinceSettleRender.isValid() &&
+      this->SinceSettleRender.elapsed() < SettleRenderMilliseconds)
+    {
+      this->SettleUndrawn = true;
+      weakFilter->UpdatePipeline(); // its dataUpdated continues
+      return;
+    }
+    this->SettleUndrawn = false;
+    this->SinceSettleRender.start();
     weakView->render();
   });
 }

@@ -13,6 +13,7 @@
 #ifndef pqAutoApplyDrag_h
 #define pqAutoApplyDrag_h
 
+#include <QElapsedTimer>
 #include <QPointer>
 
 class QObject;
@@ -39,10 +40,12 @@ public:
   static void limitSettle(vtkSMProxy* filter);
 
   /// After an update of `filter` outside a drag, where its settle stopped at SettleTimeLimit
-  /// with iterations left (its Settling information): continues it in `view` (the filter's
-  /// ContinueSettling, then a render, which updates it) once the events waiting are handled,
-  /// unless a drag has begun by then, so that the window waits at most one update and a new
-  /// grab ends the settle. `context` owns this object. Nothing otherwise.
+  /// with iterations left (its Settling information): continues it (the filter's
+  /// ContinueSettling, then its update) once the events waiting are handled, unless a drag has
+  /// begun by then, so that the window waits at most one update and a new grab ends the
+  /// settle. `view` renders the settle's shape every few seconds and at its end, not at each
+  /// update: ParaView's update of a changed output and its render cost about a second on a
+  /// 2.4M-point scan, as much as a 269k region's step. `context` owns this object.
   void continueSettle(vtkSMProxy* filter, pqView* view, QObject* context);
 
 private:
@@ -53,6 +56,10 @@ private:
   vtkSMProxy* Filter = nullptr;
   QPointer<pqView> View;
   bool Active = false;
+  // Since the view last drew the settle's shape (or the drag's release), and whether an update
+  // of the settle has not been drawn yet.
+  QElapsedTimer SinceSettleRender;
+  bool SettleUndrawn = false;
   // The view's EnableRenderOnInteraction before the drag, while it is held off (-1: it is not).
   int SavedRenderOnInteraction = -1;
 };

@@ -29,8 +29,9 @@ cut a profile with:
 `perf record -k mono -g -o FILE -- paraview ...`, then `perf report --time START,END`.
 Where the release's settle stops at the panel's time limit (a large region), the line waits
 for the settle that the panel continues between the events, and adds: its updates, iterations
-and seconds from the release, the longest and the median turn of the event loop among them
-(the longest the window waits), and the energy reached. The earlier drags of DRAGS are
+and seconds from the release (to its last update, and to the render of the settled shape), the
+longest and the median turn of the event loop among them (the longest the window waits), and
+the energy reached. The earlier drags of DRAGS are
 grabbed again before their settles end, as a user who grabs again would."""
 import json
 import math
@@ -185,6 +186,9 @@ def main(out):
     release_start, turns = result["release_window"]
     turns = [turns]
     iterations = [info("NumberOfARAPIterations")]
+    renders = [0]
+    window = view.GetRenderWindow()
+    window.AddObserver("EndEvent", lambda *_: renders.__setitem__(0, renders[0] + 1))
 
     def settled(filter, event):
         try:
@@ -196,8 +200,8 @@ def main(out):
 
     def measure_turn(filter):
         turns.append(time.monotonic())
-        iterations.append(filter.GetNumberOfARAPIterations())
-        if filter.GetSettling():
+        iterations.append(info("NumberOfARAPIterations"))
+        if info("Settling"):
             return
         waits = [b - a for a, b in zip(turns, turns[1:])]
         result.update({"settle_updates": len(iterations),
@@ -205,7 +209,12 @@ def main(out):
                        "settle_s": round(turns[-1] - release_start, 2),
                        "settle_longest_turn_ms": round(1000.0 * max(waits), 1),
                        "settle_median_turn_ms": round(1000.0 * sorted(waits)[len(waits) // 2], 1),
-                       "settled_energy": filter.GetARAPEnergy()})
+                       "settle_renders": renders[0],
+                       "settled_energy": info("ARAPEnergy")})
+        window.AddObserver("EndEvent", drawn)
+
+    def drawn(window, event):  # the settled shape's render
+        result["settle_drawn_s"] = round(time.monotonic() - release_start, 2)
         print(json.dumps(result), file=out, flush=True)
         os._exit(0)
     deform.GetClientSideObject().AddObserver("EndEvent", settled)
