@@ -258,7 +258,7 @@ bool EditPipeline::Solve(const EditMotions& motions, const SolverSettings& setti
   this->Solving = settings;
   this->OutOfTime = false;
   const Stopwatch watch;
-  this->SolveClock = watch;
+  this->SolveClock = Stopwatch(); // the time limit's clock
   const EditStatus status = this->Editor.Solve(
     this->Maps, this->Solution, motions.HasPoints ? &motions.Points : nullptr);
   Facts& facts = this->LastFacts;
