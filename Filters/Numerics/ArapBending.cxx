@@ -63,10 +63,10 @@ void ArapBending::Build(double weight, const ArapRings& rings,
 
 void ArapBending::AddToRightHandSide(const ArapRings& rings, const std::vector<int>& unknownOfPatch,
   const std::vector<Eigen::Matrix3d>& rotations, const std::vector<Vector3>& patch,
-  const Positions& rest, Eigen::Ref<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> rhs) const
+  const std::vector<Vector3>& rest, Eigen::Ref<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> rhs) const
 {
   // A scatter of each ring's share into its free unknowns: serial, a pass over the rings.
-  auto moved = [&](int row) -> Vector3 { return patch[row] - rest.row(row).transpose(); };
+  auto moved = [&](int row) -> Vector3 { return patch[row] - rest[row]; };
   for (int i = 0; i < static_cast<int>(this->Coefficients.size()); ++i)
   {
     // (R_i - I) s_i less the ring row's known part, c_i u over the known patch rows.

@@ -59,7 +59,7 @@ public:
   /// of `rhs`, for the rotations and the patch's positions (`rest`: its rest positions).
   void AddToRightHandSide(const ArapRings& rings, const std::vector<int>& unknownOfPatch,
     const std::vector<Eigen::Matrix3d>& rotations, const std::vector<Vector3>& patch,
-    const Positions& rest, Eigen::Ref<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> rhs) const;
+    const std::vector<Vector3>& rest, Eigen::Ref<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> rhs) const;
 
 private:
   std::vector<double> Coefficients; // mu_i

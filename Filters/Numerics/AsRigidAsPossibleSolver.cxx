@@ -192,7 +192,7 @@ std::string AsRigidAsPossibleSolver::Build(const SurfaceMesh& mesh, const EditRe
   this->PriorWeight = 0.0;
   if (!this->Points.IsEmpty())
   {
-    this->RestPoints = this->Points.Evaluate(this->RestPatch.topRows(this->NumberOfROIVertices));
+    this->RestPoints = this->Points.Evaluate(this->RestRows(this->NumberOfROIVertices));
     this->AddPrior(options.SplinePrior, matrix);
     this->Points.Weigh(options.PointWeight, matrix);
     error = this->Points.AddToMatrix(matrix, this->UnknownOfPatch, 1);
@@ -222,7 +222,7 @@ void AsRigidAsPossibleSolver::AddPrior(double weight, Eigen::SparseMatrix<double
   {
     matrix.coeffRef(u, u) += this->PriorWeight;
   }
-  this->FreeRest = this->FreePositions(this->RestPatch.topRows(this->NumberOfROIVertices));
+  this->FreeRest = this->FreePositions(this->RestRows(this->NumberOfROIVertices));
 }
 
 std::vector<int> AsRigidAsPossibleSolver::GrowPatch(
@@ -254,13 +254,26 @@ std::vector<int> AsRigidAsPossibleSolver::GrowPatch(
   this->NumberOfEnergyVertices = static_cast<int>(patchVertices.size());
   grow(n, this->NumberOfEnergyVertices);
   const int patchSize = static_cast<int>(patchVertices.size());
-  this->RestPatch.resize(patchSize, 3);
+  this->RestVertices.resize(patchSize);
+  Vector3 low = Vector3::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for (int k = 0; k < patchSize; ++k)
   {
-    this->RestPatch.row(k) = mesh.GetPositions()[patchVertices[k]].transpose();
+    this->RestVertices[k] = mesh.GetPositions()[patchVertices[k]];
+    low = low.cwiseMin(this->RestVertices[k]);
+    high = high.cwiseMax(this->RestVertices[k]);
   }
-  this->RestExtent = (this->RestPatch.colwise().maxCoeff() - this->RestPatch.colwise().minCoeff()).norm();
+  this->RestExtent = patchSize > 0 ? (high - low).norm() : 0.0;
   return patchVertices;
+}
+
+Positions AsRigidAsPossibleSolver::RestRows(int count) const
+{
+  Positions rows(count, 3);
+  for (int k = 0; k < count; ++k)
+  {
+    rows.row(k) = this->RestVertices[k].transpose();
+  }
+  return rows;
 }
 
 void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
@@ -290,7 +303,6 @@ void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
   this->Offsets.assign(ringStart.begin(), ringStart.begin() + energyVertices + 1);
   this->Neighbors.resize(edges);
   this->Weights.resize(edges);
-  this->RestEdges.resize(edges);
   loop(0, energyVertices, [&](int first, int last) {
     for (int i = first; i < last; ++i)
     {
@@ -304,7 +316,6 @@ void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
         const int edge = ringStart[i] + k;
         this->Neighbors[edge] = j;
         this->Weights[edge] = 0.5 * (oneSided[ringStart[i] + k] + oneSided[ringStart[j] + slot]);
-        this->RestEdges[edge] = (this->RestPatch.row(i) - this->RestPatch.row(j)).transpose();
       }
     }
   });
@@ -314,8 +325,8 @@ void AsRigidAsPossibleSolver::WeighEdges(const SurfaceMesh& mesh,
   {
     for (int edge = this->Offsets[i]; edge < this->Offsets[i + 1]; ++edge)
     {
-      this->RestScale += this->Weights[edge] * this->RestEdges[edge].squaredNorm();
-      this->RestEdgeSums[i] += this->Weights[edge] * this->RestEdges[edge];
+      this->RestScale += this->Weights[edge] * this->RestEdge(i, edge).squaredNorm();
+      this->RestEdgeSums[i] += this->Weights[edge] * this->RestEdge(i, edge);
     }
   }
 }
@@ -339,7 +350,7 @@ void AsRigidAsPossibleSolver::CoupleRotations(const SurfaceMesh& mesh,
     {
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
-        const double scale = std::min(1.0, bendingLength * bendingLength / this->RestEdges[k].squaredNorm());
+        const double scale = std::min(1.0, bendingLength * bendingLength / this->RestEdge(i, k).squaredNorm());
         this->BendingRelief[k] =
           this->Neighbors[k] < this->NumberOfEnergyVertices ? 0.5 * (1.0 - scale) * this->Weights[k] : 0.0;
       }
@@ -445,7 +456,7 @@ std::string AsRigidAsPossibleSolver::ChooseUnknowns(const EditRegion& region)
 {
   // Unknowns: the ROI without its handles.
   this->FreeRows.clear();
-  this->UnknownOfPatch.assign(this->RestPatch.rows(), -1);
+  this->UnknownOfPatch.assign(this->RestVertices.size(), -1);
   for (int k = 0; k < this->NumberOfROIVertices; ++k)
   {
     if (region.Roles[k] != VertexRole::Handle)
@@ -558,11 +569,11 @@ Eigen::SparseMatrix<double> AsRigidAsPossibleSolver::AssembleFreeLaplacian(const
 void AsRigidAsPossibleSolver::Patch(
   const Positions& roiPositions, std::vector<Vector3>& patch, const ParallelFor& loop) const
 {
-  patch.resize(this->RestPatch.rows());
-  loop(0, static_cast<int>(this->RestPatch.rows()), [&](int first, int last) {
+  patch.resize(this->RestVertices.size());
+  loop(0, static_cast<int>(this->RestVertices.size()), [&](int first, int last) {
     for (int k = first; k < last; ++k)
     {
-      patch[k] = (k < this->NumberOfROIVertices ? roiPositions.row(k) : this->RestPatch.row(k)).transpose();
+      patch[k] = k < this->NumberOfROIVertices ? Vector3(roiPositions.row(k).transpose()) : this->RestVertices[k];
     }
   });
 }
@@ -637,7 +648,7 @@ Eigen::Matrix3d AsRigidAsPossibleSolver::Deformation(const std::vector<Vector3>&
   for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
   {
     deformation.noalias() +=
-      this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdges[k].transpose();
+      this->Weights[k] * (patch[i] - patch[this->Neighbors[k]]) * this->RestEdge(i, k).transpose();
   }
   if (!this->Bending.IsEmpty())
   {
@@ -700,8 +711,8 @@ double AsRigidAsPossibleSolver::RotateCoupled(const std::vector<Vector3>& patch,
               }
               if (!this->BendingRelief.empty() && this->BendingRelief[k] > 0.0)
               {
-                coupled[b].noalias() -=
-                  this->BendingRelief[k] * (neighbor * this->RestEdges[k]) * this->RestEdges[k].transpose();
+                const Vector3 edge = this->RestEdge(i, k);
+                coupled[b].noalias() -= this->BendingRelief[k] * (neighbor * edge) * edge.transpose();
               }
             }
             blockRotations[b] = quaternions[i];
@@ -744,7 +755,7 @@ double AsRigidAsPossibleSolver::CouplingResidual(const std::vector<Eigen::Matrix
     }
     if (!this->BendingRelief.empty() && this->BendingRelief[k] > 0.0)
     {
-      residual -= 0.5 * this->BendingRelief[k] * ((rotations[i] - rotations[j]) * this->RestEdges[k]).squaredNorm();
+      residual -= 0.5 * this->BendingRelief[k] * ((rotations[i] - rotations[j]) * this->RestEdge(i, k)).squaredNorm();
     }
   }
   return residual;
@@ -767,7 +778,7 @@ double AsRigidAsPossibleSolver::Residual(
   for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
   {
     residual += this->Weights[k] *
-      (patch[i] - patch[this->Neighbors[k]] - rotation * this->RestEdges[k]).squaredNorm();
+      (patch[i] - patch[this->Neighbors[k]] - rotation * this->RestEdge(i, k)).squaredNorm();
   }
   if (!this->Bending.IsEmpty())
   {
@@ -798,10 +809,10 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
         const int j = this->Neighbors[k];
-        turned.noalias() += this->Weights[k] * (rotations[j] * this->RestEdges[k]);
+        turned.noalias() += this->Weights[k] * (rotations[j] * this->RestEdge(i, k));
         if (this->UnknownOfPatch[j] < 0)
         {
-          b += (2.0 * this->Weights[k]) * (patch[j] - this->RestPatch.row(j).transpose());
+          b += (2.0 * this->Weights[k]) * (patch[j] - this->RestVertices[j]);
         }
       }
       rhs.row(u) = 0.5 * (b + (turned - sum)).transpose();
@@ -810,7 +821,7 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
   if (!this->Bending.IsEmpty())
   {
     this->Bending.AddToRightHandSide(
-      this->Rings(), this->UnknownOfPatch, rotations, patch, this->RestPatch, rhs);
+      this->Rings(), this->UnknownOfPatch, rotations, patch, this->RestVertices, rhs);
   }
   if (this->PriorWeight > 0.0)
   {
@@ -824,7 +835,7 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
     loop(0, free, [&](int first, int last) {
       for (int u = first; u < last; ++u)
       {
-        g.row(u) = this->RestPatch.row(this->FreeRows[u]) + displacement.row(u);
+        g.row(u) = this->RestVertices[this->FreeRows[u]].transpose() + displacement.row(u);
       }
     });
     return g;
@@ -846,7 +857,7 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::Global(const std::vector<Eigen::Matrix3
     const Eigen::MatrixXd displacement = this->Factor.Solve(withPull, loop);
     for (int u = 0; u < free; ++u)
     {
-      roi.row(this->FreeRows[u]) = this->RestPatch.row(this->FreeRows[u]) + displacement.row(u);
+      roi.row(this->FreeRows[u]) = this->RestVertices[this->FreeRows[u]].transpose() + displacement.row(u);
     }
     return roi;
   };
@@ -1120,7 +1131,7 @@ ArapIterate AsRigidAsPossibleSolver::InitialGuess(
   const std::vector<AffineMap>& handleMaps, const PointTargets* points) const
 {
   ArapIterate guess;
-  guess.Points = this->RestPatch.topRows(this->NumberOfROIVertices);
+  guess.Points = this->RestRows(this->NumberOfROIVertices);
   this->LocalStep(handleMaps, guess, SerialFor, false);
   this->UpdatePrior(points, guess.Work, SerialFor);
   const std::vector<Eigen::Matrix3d> identities(this->NumberOfEnergyVertices, Eigen::Matrix3d::Identity());
@@ -1145,7 +1156,7 @@ void AsRigidAsPossibleSolver::PlaceHandles(
     const int group = this->HandleGroups[k];
     if (group >= 0)
     {
-      const Vector3 rest = this->RestPatch.row(k).transpose();
+      const Vector3& rest = this->RestVertices[k];
       iterate.Points.row(k) = (group < static_cast<int>(handleMaps.size())
           ? Apply(handleMaps[group], rest) : rest).transpose();
     }
@@ -1198,7 +1209,7 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::EdgeBalance(const std::vector<Vector3>&
       for (int k = this->Offsets[i]; k < this->Offsets[i + 1]; ++k)
       {
         const int j = this->Neighbors[k];
-        sum.noalias() += this->Weights[k] * (values[i] - values[j] - 0.5 * (matrices[j] * this->RestEdges[k]));
+        sum.noalias() += this->Weights[k] * (values[i] - values[j] - 0.5 * (matrices[j] * this->RestEdge(i, k)));
       }
       balance.row(u) = sum.transpose();
     }
@@ -1239,7 +1250,7 @@ Eigen::MatrixXd AsRigidAsPossibleSolver::HessianProduct(
   const Eigen::MatrixXd& change, ArapIterate::Workspace& work, const ParallelFor& loop) const
 {
   std::vector<Vector3>& patchChange = work.PatchChange;
-  patchChange.assign(this->RestPatch.rows(), Vector3::Zero());
+  patchChange.assign(this->RestVertices.size(), Vector3::Zero());
   const int free = static_cast<int>(this->FreeRows.size());
   loop(0, free, [&](int first, int last) {
     for (int u = first; u < last; ++u)

@@ -319,7 +319,7 @@ private:
   int NumberOfROIVertices = 0;
   // Patch vertices: ROI rows first, then the rest; their rest positions and the diagonal of
   // their bounding box.
-  Positions RestPatch;
+  std::vector<Vector3> RestVertices;
   double RestExtent = 0.0;
   // The energy vertices (ROI and ring, as patch rows), each with its CSR neighbours (patch
   // rows) and symmetric weights.
@@ -327,7 +327,14 @@ private:
   std::vector<int> Offsets;
   std::vector<int> Neighbors;
   std::vector<double> Weights;
-  std::vector<Vector3> RestEdges; // rest position of the vertex minus its neighbour's
+  // The first `count` patch rows' rest positions.
+  Positions RestRows(int count) const;
+  // Rest edges are differences of RestVertices, not stored: a 600k region's would take 88 MB,
+  // and the loops over edges gather the neighbour's current position anyway.
+  Vector3 RestEdge(int i, int k) const
+  {
+    return this->RestVertices[i] - this->RestVertices[this->Neighbors[k]];
+  }
   std::vector<Vector3> RestEdgeSums; // per energy vertex, its edges' weighted sum
   std::vector<double> RotationCoupling; // per edge, beta_ij (0 to the ring's ring); empty: none
   std::vector<double> BendingRelief; // per edge, (1 - s_ij) w_ij / 2 (0 to the ring's ring); empty: none
