@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 
@@ -29,6 +31,15 @@ constexpr double NearMiss = 100.0;
 constexpr double StageTolerance = 1e-3;
 // A step this short says the proxy has lost the energy's shape: it is reweighted.
 constexpr double StallStep = 0.05;
+// The gradient's blocks of tetrahedra (a fixed number: the sum's order does not follow the
+// threads).
+constexpr int GradientBlocks = 8;
+
+// The first tetrahedron of a block among m.
+int FirstOfBlock(int m, int block)
+{
+  return static_cast<int>(static_cast<std::int64_t>(m) * block / GradientBlocks);
+}
 
 using Matrix3 = Eigen::Matrix3d;
 
@@ -428,6 +439,30 @@ std::string InjectiveDeformation::Prepare(const Positions& rest, const Tetrahedr
       this->PointCorners[fill[tets(c, i)]++] = 4 * c + i;
     }
   }
+  // Each block of the gradient's tetrahedra adds into the unknowns it reaches, a range of them
+  // (sorted by their first points, the blocks reach overlapping ranges, not all the unknowns).
+  this->BlockUnknowns.assign(2 * GradientBlocks, 0);
+  this->BlockRows.assign(GradientBlocks + 1, 0);
+  for (int block = 0; block < GradientBlocks; ++block)
+  {
+    int first = std::numeric_limits<int>::max(), end = 0;
+    for (int c = FirstOfBlock(m, block); c < FirstOfBlock(m, block + 1); ++c)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        const int u = this->Unknown[tets(c, i)];
+        if (u >= 0)
+        {
+          first = std::min(first, u);
+          end = std::max(end, u + 1);
+        }
+      }
+    }
+    first = std::min(first, end);
+    this->BlockUnknowns[2 * block] = first;
+    this->BlockUnknowns[2 * block + 1] = end;
+    this->BlockRows[block + 1] = this->BlockRows[block] + end - first;
+  }
   this->Factor = SparseCholesky();
   this->Factor.SetManySolves(true);
   this->FactoredWeight = 0.0; // Solve factors at its first stage's weight
@@ -543,38 +578,61 @@ double InjectiveDeformation::Gradient(const Positions& points, const Positions& 
 {
   const Rows x = points;
   const int m = static_cast<int>(this->Tets.rows());
-  // Kept between calls: allocated anew, a large zone's buffers cost their page faults again.
-  auto& local = this->CornerGradients;
-  local.resize(m, 12);
+  const int unknowns = static_cast<int>(this->Unknowns.size());
+  // Each block of tetrahedra adds its corners' gradients into its own rows for the unknowns it
+  // reaches, which stay in cache, and the blocks are then summed: no two threads write one row,
+  // and the sum does not depend on the threads. Kept between calls: allocated anew, a large
+  // zone's buffer costs its page faults again.
+  Rows& sums = this->BlockGradients;
+  sums.resize(this->BlockRows.back(), 3);
   std::vector<double>& energies = this->TetEnergies;
   energies.resize(m);
-  loop(0, m, [&](int first, int last) {
-    for (int c = first; c < last; ++c)
+  loop(0, GradientBlocks, [&](int firstBlock, int lastBlock) {
+    for (int block = firstBlock; block < lastBlock; ++block)
     {
-      Edges3 edges;
-      LoadEdges(x.data(), this->Tets.data() + 4 * c, edges);
-      double* corners = local.row(c).data(); // column-major 3 x 4: one column a corner
-      if (!(Determinant(edges) > 0.0))
+      const int firstUnknown = this->BlockUnknowns[2 * block];
+      double* sum = sums.data() + 3 * (static_cast<std::ptrdiff_t>(this->BlockRows[block]) - firstUnknown);
+      std::fill(sums.data() + 3 * this->BlockRows[block], sums.data() + 3 * this->BlockRows[block + 1], 0.0);
+      for (int c = FirstOfBlock(m, block); c < FirstOfBlock(m, block + 1); ++c)
       {
-        energies[c] = Infinity;
-        std::fill(corners, corners + 12, 0.0);
-        continue;
+        const int* tet = this->Tets.data() + 4 * c;
+        Edges3 edges;
+        LoadEdges(x.data(), tet, edges);
+        if (!(Determinant(edges) > 0.0))
+        {
+          energies[c] = Infinity;
+          continue;
+        }
+        double corners[12]; // column-major 3 x 4: one column a corner
+        energies[c] =
+          SymmetricDirichlet(edges, this->RestInverse[c].data(), this->Volume[c], corners);
+        for (int i = 0; i < 4; ++i)
+        {
+          const int u = this->Unknown[tet[i]];
+          if (u >= 0)
+          {
+            for (int k = 0; k < 3; ++k)
+            {
+              sum[3 * u + k] += corners[3 * i + k];
+            }
+          }
+        }
       }
-      energies[c] =
-        SymmetricDirichlet(edges, this->RestInverse[c].data(), this->Volume[c], corners);
     }
   });
-  // Each unknown gathers its corners' gradients: no two threads write one row.
-  const int unknowns = static_cast<int>(this->Unknowns.size());
   gradient.resize(unknowns, 3);
   loop(0, unknowns, [&](int first, int last) {
     for (int u = first; u < last; ++u)
     {
       const int p = this->Unknowns[u];
       Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-      for (int k = this->TetOffsets[p]; k < this->TetOffsets[p + 1]; ++k)
+      for (int block = 0; block < GradientBlocks; ++block)
       {
-        sum += Eigen::Map<const Eigen::RowVector3d>(local.data() + 3 * this->PointCorners[k]);
+        const int firstUnknown = this->BlockUnknowns[2 * block];
+        if (u >= firstUnknown && u < this->BlockUnknowns[2 * block + 1])
+        {
+          sum += sums.row(this->BlockRows[block] + u - firstUnknown);
+        }
       }
       if (this->Kinds[p] == PointKind::Targeted)
       {

@@ -158,8 +158,11 @@ private:
   double TotalVolume = 0.0;
   SparseCholesky Factor;
   std::vector<double> Misses;
-  // The per-tetrahedron buffers of Gradient and Energy.
-  mutable Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor> CornerGradients;
+  // Gradient's sums over its blocks of tetrahedra (one row an unknown, a block after another),
+  // and the per-tetrahedron energies of Gradient and Energy.
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> BlockGradients;
+  std::vector<int> BlockUnknowns; // per block: its first unknown and the end of its range
+  std::vector<int> BlockRows;     // per block: its first row in BlockGradients; then their count
   mutable std::vector<double> TetEnergies;
 };
 }

@@ -522,6 +522,18 @@ void VolumeMesh::SelectZone(
   zone.Points.clear();
   zone.Kinds.clear();
   zone.Cells.clear();
+  // The movable points in the order the front reached them, the fixed ones after: neighbours get
+  // near numbers, so the solver's passes over tetrahedra (sorted by their first points) read and
+  // write points near the last ones.
+  for (vtkIdType id : reached)
+  {
+    auto found = kind.find(id);
+    if (found != kind.end() && local.emplace(id, static_cast<int>(zone.Points.size())).second)
+    {
+      zone.Points.push_back(id);
+      zone.Kinds.push_back(found->second);
+    }
+  }
   zone.Tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
   for (std::size_t t = 0; t < tets.size(); ++t)
   {
