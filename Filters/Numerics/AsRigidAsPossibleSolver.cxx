@@ -21,27 +21,39 @@ Vector3 Apply(const AffineMap& map, const Vector3& p)
 
 // A solve's iterations, each with its energy: whether the solve stops after it, converged
 // (the energy fell by less than the tolerance per iteration over the last `window`, or
-// `stalled`) or aborted through the progress callback.
+// `stalled`) or aborted through the progress callback. The energies and their count are the
+// workspace's, so that a continued solve (ArapOptions::Continue) tests as the uncut one.
 class IterationLog
 {
 public:
-  IterationLog(double start, const ArapOptions& options, std::vector<double>* energies)
+  IterationLog(double start, const ArapOptions& options, std::vector<double>* energies,
+    ArapIterate::Workspace& work)
     : Options(options)
     , Energies(energies)
+    , Recent(work.RecentEnergies)
+    , Logged(work.LoggedIterations)
   {
-    this->Recent[0] = start;
+    if (!options.Continue)
+    {
+      this->Logged = 0;
+      this->Recent[0] = start;
+    }
   }
+
+  /// The number of the iteration the next Stop logs, counted from the uncut solve's start.
+  int Next() const { return this->Logged + 1; }
 
   bool Stop(ArapResult& result, double energy, int window, bool stalled = false)
   {
     result.Energy = energy;
     ++result.Iterations;
+    ++this->Logged;
     if (this->Energies)
     {
       this->Energies->push_back(energy);
     }
-    const double decrease = this->Recent[(result.Iterations - window) % this->Recent.size()] - energy;
-    this->Recent[result.Iterations % this->Recent.size()] = energy;
+    const double decrease = this->Recent[(this->Logged - window) % this->Recent.size()] - energy;
+    this->Recent[this->Logged % this->Recent.size()] = energy;
     if (stalled || (window > 0 && decrease <= this->Options.Tolerance * window * energy))
     {
       result.Converged = true;
@@ -54,20 +66,29 @@ public:
 private:
   const ArapOptions& Options;
   std::vector<double>* Energies;
-  std::array<double, ConvergenceWindow + 1> Recent;
+  std::array<double, ConvergenceWindow + 1>& Recent;
+  int& Logged;
 };
 
-// Anderson acceleration's history during one solve: the last `size` differences of g and of
-// the residual f = g - x, a ring of the workspace's columns.
+// Anderson acceleration's history: the last `size` differences of g and of the residual
+// f = g - x, a ring of the workspace's columns, which a continued solve takes up.
 class AndersonRing
 {
 public:
-  AndersonRing(int size, Eigen::Index length, ArapIterate::Workspace& work)
+  AndersonRing(int size, Eigen::Index length, ArapIterate::Workspace& work, bool continues)
     : Size(size)
     , Length(length)
+    , Stored(work.StoredDifferences)
+    , Newest(work.NewestDifference)
+    , HasPrevious(work.HasPrevious)
   {
-    work.GDifferences.resize(length, size);
-    work.FDifferences.resize(length, size);
+    if (!continues || work.GDifferences.rows() != length || work.GDifferences.cols() != size)
+    {
+      work.GDifferences.resize(length, size);
+      work.FDifferences.resize(length, size);
+      this->Restart();
+      this->HasPrevious = false;
+    }
   }
 
   // `next` becomes g, mixed with the history when `accelerate` and there is one; returns
@@ -157,9 +178,9 @@ public:
 private:
   int Size;
   Eigen::Index Length;
-  int Stored = 0;
-  int Newest = -1;
-  bool HasPrevious = false;
+  int& Stored;
+  int& Newest;
+  bool& HasPrevious;
 };
 }
 
@@ -983,10 +1004,11 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     return this->SolveNewton(iterate, options, loop, energies, result);
   }
   // Anderson acceleration on the fixed point x -> Global(Local(x)), over flattened positions.
-  AndersonRing ring(std::max(options.History, 1), 3 * static_cast<Eigen::Index>(this->FreeRows.size()), work);
+  AndersonRing ring(std::max(options.History, 1), 3 * static_cast<Eigen::Index>(this->FreeRows.size()),
+    work, options.Continue);
   Eigen::MatrixXd x = this->FreePositions(iterate.Points);
   Eigen::MatrixXd next(this->FreeRows.size(), 3);
-  IterationLog log(result.Energy, options, energies);
+  IterationLog log(result.Energy, options, energies, work);
   for (int iteration = 0; iteration < options.MaximumIterations; ++iteration)
   {
     const Eigen::MatrixXd g = this->Global(work.Rotations, work.Patch, work, loop, points);
@@ -1010,7 +1032,7 @@ ArapResult AsRigidAsPossibleSolver::Solve(const std::vector<AffineMap>& handleMa
     // alternate long and short ones, and a short one says little (a 60-degree bend of
     // bumps.obj stopped at 1.7 times the converged energy on its 7th iteration's 5e-4). A drag
     // step, which starts near its result, tests its last iteration, after the first.
-    const int done = result.Iterations + 1;
+    const int done = log.Next();
     if (log.Stop(result, energy, extrapolate ? (done >= 2 ? 1 : 0) : std::min(done, ConvergenceWindow)))
     {
       break;
@@ -1346,7 +1368,7 @@ ArapResult AsRigidAsPossibleSolver::SolveNewton(ArapIterate& iterate, const Arap
 {
   ArapIterate::Workspace& work = iterate.Work;
   Eigen::MatrixXd x = this->FreePositions(iterate.Points);
-  IterationLog log(result.Energy, options, energies);
+  IterationLog log(result.Energy, options, energies, work);
   // The trust region's radius, in L_ff's norm: at first a local-global step's length, or
   // where the cut solve this one continues left it.
   double& radius = work.TrustRadius;
@@ -1406,7 +1428,7 @@ ArapResult AsRigidAsPossibleSolver::SolveNewton(ArapIterate& iterate, const Arap
     work.Rotations.swap(work.CandidateRotations);
     iterate.Rotations.swap(work.CandidateQuaternions);
     x.swap(next);
-    if (log.Stop(result, energy, std::min(result.Iterations + 1, ConvergenceWindow), stalled || converges))
+    if (log.Stop(result, energy, std::min(log.Next(), ConvergenceWindow), stalled || converges))
     {
       break;
     }

@@ -58,6 +58,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <functional>
 
 #include <string>
@@ -106,8 +107,9 @@ struct ArapOptions
   /// solve that is not one settles the full-resolution shape.
   bool Dragging = false;
   /// The solve continues the last one on this iterate, which a Progress stop cut short (a
-  /// settle split across updates): Newton's steps keep their trust region, so that the
-  /// iterates are those of one uncut solve.
+  /// settle split across updates): the stopping test keeps its last energies, Anderson its
+  /// history and Newton's steps their trust region, so that the iterates are those of one
+  /// uncut solve.
   bool Continue = false;
   /// Called after each iteration with the share of MaximumIterations done. Returning false
   /// ends the solve at that iteration's shape (a settle of a large region takes seconds, and
@@ -149,12 +151,20 @@ struct ArapIterate
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> RightHandSide;
     // An exact fit's correction of the point targets (PointConstraints::Fit), carried over.
     Positions PointCorrection;
-    // Anderson acceleration's history (columns) and last iterate.
+    // Anderson acceleration's history (columns: how many hold differences, and the newest)
+    // and last iterate (whether there is one).
     Eigen::MatrixXd GDifferences;
     Eigen::MatrixXd FDifferences;
     Eigen::VectorXd PreviousG;
     Eigen::VectorXd PreviousF;
     Eigen::VectorXd Residual;
+    int StoredDifferences = 0;
+    int NewestDifference = -1;
+    bool HasPrevious = false;
+    // The stopping test's iterations since the solve began and their last energies, a ring
+    // (ArapOptions::Continue).
+    int LoggedIterations = 0;
+    std::array<double, ConvergenceWindow + 1> RecentEnergies{};
     // The spline prior's displacements of the free rows, the point targets they are for, and
     // the cardinal functions on the free rows of the points moved last, by point.
     Eigen::MatrixXd Prior;

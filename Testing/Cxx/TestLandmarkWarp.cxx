@@ -1,7 +1,8 @@
 // vtkLaplacianLandmarkWarp: landmarks at their sources give the input back, a rigid motion of
 // every landmark moves the surface rigidly, an exact fit meets every target (checked by
 // locating each landmark on the input and the output independently), components without
-// landmarks stay, only new targets reuse the factor, and bad landmarks are clear errors.
+// landmarks stay, only new targets reuse the factor, a settle split by a time limit ends where
+// the uncut one does, and bad landmarks are clear errors.
 #include "FilterTestHelpers.h"
 #include "ImageWarp.h"
 #include "KnownWarps.h"
@@ -25,6 +26,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 
 using namespace FilterTestHelpers;
@@ -609,4 +611,43 @@ TEST(LandmarkWarp, MovedTargetsTakeThePlaceOfTheGivenOnes)
   warp->Update();
   EXPECT_NE(warnings.Messages.find("names landmark 100, and there are 100"), std::string::npos);
   EXPECT_LE(MaxPointDistance(warp->GetPolyDataOutput(), bunny), 1e-6 * Diagonal(bunny));
+}
+
+TEST(LandmarkWarp, ASettleSplitByATimeLimitEndsOnTheUncutSettlesShape)
+{
+  // ParaView's landmark dragger limits each update's settle as its handle widget does: the
+  // bunny bent by 300 landmarks, warped once in one update and once with a SettleTimeLimit
+  // that every step reaches, continued update by update while GetSettling(). Required: one
+  // step an update, as many as the uncut warp's; each update's output meets every landmark
+  // (1e-9 of the diagonal: an exact fit is a constraint of every step); the last output the
+  // uncut warp's (1e-12 of the diagonal: the same iterates).
+  auto bunny = Load("stanford-bunny.obj");
+  auto sources = SurfacePoints(bunny, 300);
+  auto targets = Bent(bunny, sources, 4.0);
+  auto uncut = Warp(bunny, sources, targets);
+  uncut->Update();
+  EXPECT_FALSE(uncut->GetSettling());
+  const int steps = uncut->GetNumberOfARAPIterations();
+  ASSERT_GT(steps, 2);
+
+  auto cut = Warp(bunny, sources, targets);
+  cut->SetSettleTimeLimit(1e-9);
+  int updates = 0;
+  do
+  {
+    cut->ContinueSettling();
+    cut->Update();
+    ++updates;
+    ASSERT_EQ(cut->GetErrorCode(), vtkErrorCode::NoError);
+    ASSERT_EQ(cut->GetNumberOfARAPIterations(), 1) << "update " << updates;
+    ASSERT_LE(LargestMiss(bunny, cut->GetPolyDataOutput(), sources, targets), 1e-9 * Diagonal(bunny))
+      << "update " << updates;
+  } while (cut->GetSettling() && updates <= steps);
+  EXPECT_EQ(updates, steps);
+  EXPECT_EQ(cut->GetNumberOfFactorizations(), uncut->GetNumberOfFactorizations());
+  const double apart =
+    MaxPointDistance(uncut->GetPolyDataOutput(), cut->GetPolyDataOutput()) / Diagonal(bunny);
+  std::printf("a warp's settle cut into %d updates: %.2e of the diagonal from the uncut one\n",
+    updates, apart);
+  EXPECT_LT(apart, 1e-12);
 }
