@@ -1,5 +1,9 @@
 #include "pqAutoApplyDrag.h"
 
+#include "pqApplicationCore.h"
+#include "pqPipelineSource.h"
+#include "pqPropertyWidget.h"
+#include "pqServerManagerModel.h"
 #include "pqView.h"
 #include "vtkWeakPointer.h"
 #include "vtkClientServerStream.h"
@@ -115,15 +119,21 @@ void pqAutoApplyDrag::invoke(vtkSMProxy* filter, const char* method, Arguments..
   filter->GetSession()->ExecuteStream(filter->GetLocation(), stream, false);
 }
 
-void pqAutoApplyDrag::limitSettle(vtkSMProxy* filter)
+void pqAutoApplyDrag::settleBetweenEvents(pqPropertyWidget* widget)
 {
+  vtkSMProxy* filter = widget->proxy();
+  auto* source =
+    pqApplicationCore::instance()->getServerManagerModel()->findItem<pqPipelineSource*>(filter);
+  if (!source || !filter->GetProperty("Settling"))
+  {
+    return;
+  }
   // Half a second: a 269k-vertex region's Newton step takes about that long, a 610k one's a
   // second (Documentation/paraview.md).
   constexpr double SettleSeconds = 0.5;
-  if (filter && filter->GetProperty("Settling"))
-  {
-    pqAutoApplyDrag::invoke(filter, "SetSettleTimeLimit", SettleSeconds);
-  }
+  pqAutoApplyDrag::invoke(filter, "SetSettleTimeLimit", SettleSeconds);
+  QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated), widget,
+    [this, widget]() { this->continueSettle(widget->proxy(), widget->view(), widget); });
 }
 
 void pqAutoApplyDrag::setDragging(vtkSMProxy* filter, bool dragging)

@@ -17,6 +17,7 @@
 #include <QPointer>
 
 class QObject;
+class pqPropertyWidget;
 class pqView;
 class vtkSMProxy;
 
@@ -34,21 +35,20 @@ public:
   /// drag or otherwise.
   void resumeRendering();
 
-  /// Gives `filter` the GUI's settle time limit (its SettleTimeLimit, set on the server alone as
-  /// Dragging is, so that a script or a saved state settles in full): an update then waits at
-  /// most about that long, or one step where a step takes longer, and continueSettle goes on.
-  static void limitSettle(vtkSMProxy* filter);
-
-  /// After an update of `filter` outside a drag, where its settle stopped at SettleTimeLimit
-  /// with iterations left (its Settling information): continues it (the filter's
+  /// Settles `widget`'s filter between the GUI's events. Gives the filter the GUI's settle time
+  /// limit (its SettleTimeLimit, set on the server alone as Dragging is, so that a script or a
+  /// saved state settles in full): an update then waits at most about that long, or one step
+  /// where a step takes longer. After each of its updates outside a drag whose settle stopped
+  /// there with iterations left (its Settling information), continues it (the filter's
   /// ContinueSettling, then its update) once the events waiting are handled, unless a drag has
   /// begun by then, so that the window waits at most one update and a new grab ends the
-  /// settle. `view` renders the settle's shape every few seconds and at its end, not at each
-  /// update: ParaView's update of a changed output and its render cost about a second on a
-  /// 2.4M-point scan, as much as a 269k region's step. `context` owns this object.
-  void continueSettle(vtkSMProxy* filter, pqView* view, QObject* context);
+  /// settle. The widget's view renders the settle's shape every few seconds and at its end, not
+  /// at each update: ParaView's update of a changed output and its render cost about a second on
+  /// a 2.4M-point scan, as much as a 269k region's step. `widget` owns this object.
+  void settleBetweenEvents(pqPropertyWidget* widget);
 
 private:
+  void continueSettle(vtkSMProxy* filter, pqView* view, QObject* context);
   template <typename... Arguments>
   static void invoke(vtkSMProxy* filter, const char* method, Arguments... arguments);
   static void setDragging(vtkSMProxy* filter, bool dragging);

@@ -92,11 +92,8 @@ pqDeformationHandlePropertyWidget::pqDeformationHandlePropertyWidget(
   {
     QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated),
       this, &pqDeformationHandlePropertyWidget::updateGroupHandles);
-    // An update's settle that stopped at the time limit goes on between the events.
-    pqAutoApplyDrag::limitSettle(proxy);
-    QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated),
-      this, [this]() { this->Drag.continueSettle(this->proxy(), this->view(), this); });
   }
+  this->Drag.settleBetweenEvents(this);
   this->updateGroupHandles();
 }
 

@@ -64,6 +64,8 @@ pqLandmarkDragPropertyWidget::pqLandmarkDragPropertyWidget(
     QObject::connect(source, QOverload<pqPipelineSource*>::of(&pqPipelineSource::dataUpdated),
       this, &pqLandmarkDragPropertyWidget::placeWidget);
   }
+  // As the handle widget's: a scan's whole-surface warp would hold the window for every step.
+  this->Drag.settleBetweenEvents(this);
   this->setWidgetVisible(true);
   this->placeWidget();
 }
