@@ -33,14 +33,12 @@ try:
     widgets = gui.handle_widgets(view)
     check(len(widgets) == 1, f"the handle widget is in the view ({len(widgets)})")
     def info(name):
-        deform.UpdatePropertyInformation()
-        return deform.GetProperty(name).SMProperty.GetElement(0)
+        return gui.information(deform, name)
 
     check(info("SettleTimeLimitInfo") == 0.5, "the panel gives the filter its settle time limit")
     limit = deform.SMProxy.GetProperty("SettleTimeLimit")  # internal: pushed only when set
     limit.SetElement(0, 1e-9)  # every step reaches it
     deform.SMProxy.UpdateVTKObjects()
-    edit = deform.GetClientSideObject()  # the built-in session's filter, for its events
 
     events = gui.ViewEvents(view)
     at = events.display(deform.HandleCenter)
@@ -67,32 +65,9 @@ try:
                  "RotationMode"):
         reference.SetPropertyWithName(name, deform.GetPropertyValue(name))
     reference.LargeRegionVertices = 0
-    reference.ARAPIterations = 10000
-    reference.Convergence = 1e-12
-    reference.SMProxy.GetProperty("SettleTimeLimit").SetElement(0, 0.0)  # the panel's, undone
-    reference.UpdatePipeline()
-    reference.UpdatePropertyInformation()
-    best = reference.GetProperty("ARAPEnergy").SMProperty.GetElement(0)
+    best = gui.converged_energy(reference)
     simple.SetActiveSource(deform)
-
-    steps = []
-
-    def continued(filter, event):
-        try:
-            steps.append(info("NumberOfARAPIterations"))
-            if info("Settling"):
-                return
-            energy = info("ARAPEnergy")
-            say(f"settle continued in {len(steps)} updates of {steps} steps; energy over "
-                f"converged {energy / best:.6f}")
-            check(len(steps) >= 2, "the panel continues the settle between the events")
-            check(all(count == 1 for count in steps), "one step an update")
-            check(best > 0.0 and energy <= 1.01 * best,
-                  "the settle ends within 1% of the converged energy")
-        except Exception:
-            checks.fail(traceback.format_exc())
-        checks.finish()
-    edit.AddObserver("EndEvent", continued)
+    gui.watch_continued_settle(checks, deform, best)
     pending = not checks.failures
 except Exception:  # any error must end the run, not open a modal dialog that never closes
     checks.fail(traceback.format_exc())

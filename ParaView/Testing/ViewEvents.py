@@ -56,6 +56,52 @@ def applied_properties(deform):
     return values
 
 
+def information(proxy, name):
+    """An information property's first value, fetched afresh."""
+    proxy.UpdatePropertyInformation()
+    return proxy.GetProperty(name).SMProperty.GetElement(0)
+
+
+def converged_energy(reference):
+    """The ARAP energy of `reference`, a filter on the values under test, run to convergence
+    (the panel's settle time limit undone)."""
+    reference.ARAPIterations = 10000
+    reference.Convergence = 1e-12
+    reference.SMProxy.GetProperty("SettleTimeLimit").SetElement(0, 0.0)
+    reference.UpdatePipeline()
+    return information(reference, "ARAPEnergy")
+
+
+def watch_continued_settle(checks, proxy, best, every_update=()):
+    """Once the script returns, the panel continues `proxy`'s cut settle between the GUI's
+    events: observes its updates until the settle ends, then checks at least two updates of
+    one step each, the last energy within 1% of `best`, and each (name, limit, what) of
+    `every_update` under its limit at every update, and ends the run."""
+    steps, values = [], {name: [] for name, _, _ in every_update}
+
+    def continued(filter, event):
+        try:
+            steps.append(information(proxy, "NumberOfARAPIterations"))
+            for name in values:
+                values[name].append(information(proxy, name))
+            if information(proxy, "Settling"):
+                return
+            energy = information(proxy, "ARAPEnergy")
+            checks.say(f"settle continued in {len(steps)} updates of {steps} steps; energy over "
+                       f"converged {energy / best:.6f}")
+            checks.check(len(steps) >= 2, "the panel continues the settle between the events")
+            checks.check(all(count == 1 for count in steps), "one step an update")
+            for name, limit, what in every_update:
+                checks.check(max(values[name]) < limit, f"{what} (at most {max(values[name]):.1e})")
+            checks.check(best > 0.0 and energy <= 1.01 * best,
+                         "the settle ends within 1% of the converged energy")
+        except Exception:
+            import traceback
+            checks.fail(traceback.format_exc())
+        checks.finish()
+    proxy.GetClientSideObject().AddObserver("EndEvent", continued)
+
+
 class Checks:
     """A GUI test's checks: each one logged to OUTPUT.log (the GUI's own output does not reach
     the console), the failures written to OUTPUT.result by finish, which ends the GUI."""
