@@ -5,6 +5,11 @@
 //
 //   RegistrationBenchmark DATA_DIR [--warp articulated|bend|turned-head|all]
 //     [--cases remeshed,noisy,hole,cloud,posed] [--landmarks N] [--seed S] [--subdivide L]
+//     [--fit Setting=value,...]
+//
+// --fit sets the fit's settings for a measurement of them (RotationMode, OperatorOrder,
+// BendingWeight, RotationSmoothing, InitialMatchWeight, FinalMatchWeight, NumberOfStages,
+// RoundsPerStage, ARAPIterations, LandOnTarget); the defaults otherwise.
 //
 // --subdivide L fits a template Loop-subdivided L times (4^L times the vertices; the
 // articulated Armadillo's 37k become 149k at L = 1), its true shape the same warp's.
@@ -28,7 +33,9 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,7 +61,29 @@ void Print(const std::string& warp, const Case& fit, const std::string& method,
             << ", \"seconds\": " << seconds << "}" << std::endl;
 }
 
-void RunCase(const KnownWarps::Warp& warp, const Case& fit)
+using Setter = std::function<void(vtkLaplacianSurfaceRegistration*, double)>;
+
+// The settings --fit may set, by name.
+const std::map<std::string, Setter>& FitSetters()
+{
+  using R = vtkLaplacianSurfaceRegistration;
+  static const std::map<std::string, Setter> setters = {
+    { "RotationMode", [](R* r, double v) { r->SetRotationMode(static_cast<int>(v)); } },
+    { "OperatorOrder", [](R* r, double v) { r->SetOperatorOrder(static_cast<int>(v)); } },
+    { "BendingWeight", [](R* r, double v) { r->SetBendingWeight(v); } },
+    { "RotationSmoothing", [](R* r, double v) { r->SetRotationSmoothing(v); } },
+    { "InitialMatchWeight", [](R* r, double v) { r->SetInitialMatchWeight(v); } },
+    { "FinalMatchWeight", [](R* r, double v) { r->SetFinalMatchWeight(v); } },
+    { "NumberOfStages", [](R* r, double v) { r->SetNumberOfStages(static_cast<int>(v)); } },
+    { "RoundsPerStage", [](R* r, double v) { r->SetRoundsPerStage(static_cast<int>(v)); } },
+    { "ARAPIterations", [](R* r, double v) { r->SetARAPIterations(static_cast<int>(v)); } },
+    { "LandOnTarget", [](R* r, double v) { r->SetLandOnTarget(v != 0.0); } },
+  };
+  return setters;
+}
+
+void RunCase(const KnownWarps::Warp& warp, const Case& fit,
+  const std::vector<std::pair<std::string, double>>& settings)
 {
   const double diagonal = warp.Mesh->GetLength();
   {
@@ -103,6 +132,10 @@ void RunCase(const KnownWarps::Warp& warp, const Case& fit)
     registration->SetInputData(warp.Mesh);
     registration->SetTargetData(fit.Target);
     registration->SetLandmarksData(landmarks);
+    for (const auto& setting : settings)
+    {
+      FitSetters().at(setting.first)(registration, setting.second);
+    }
     registration->Update();
     const double seconds = SecondsSince(start);
     Print(warp.Name, fit, "surface_registration",
@@ -116,13 +149,15 @@ int main(int argc, char* argv[])
   if (argc < 2 || std::string(argv[1]) == "--help")
   {
     std::cout << "usage: RegistrationBenchmark DATA_DIR [--warp articulated|bend|turned-head|all]\n"
-                 "  [--cases remeshed,noisy,hole,cloud,posed] [--landmarks N] [--seed S] [--subdivide L]\n";
+                 "  [--cases remeshed,noisy,hole,cloud,posed] [--landmarks N] [--seed S] [--subdivide L]\n"
+                 "  [--fit Setting=value,...]\n";
     return argc < 2 ? 1 : 0;
   }
   const std::string data = argv[1];
   std::string which = "all", cases = "remeshed,noisy,hole,cloud,posed";
   int landmarks = 8, subdivide = 0;
   unsigned seed = 3;
+  std::vector<std::pair<std::string, double>> settings;
   for (int i = 2; i + 1 < argc; i += 2)
   {
     const std::string option = argv[i], value = argv[i + 1];
@@ -141,6 +176,20 @@ int main(int argc, char* argv[])
     else if (option == "--subdivide")
     {
       subdivide = std::stoi(value);
+    }
+    else if (option == "--fit")
+    {
+      for (const std::string& setting : Split(value))
+      {
+        const std::size_t equals = setting.find('=');
+        const std::string name = setting.substr(0, equals);
+        if (equals == std::string::npos || !FitSetters().count(name))
+        {
+          std::cerr << "unknown fit setting " << setting << "\n";
+          return 1;
+        }
+        settings.emplace_back(name, std::stod(setting.substr(equals + 1)));
+      }
     }
     else if (option == "--seed")
     {
@@ -172,7 +221,7 @@ int main(int argc, char* argv[])
     }
     for (const std::string& name : Split(cases))
     {
-      RunCase(warp, RegistrationCases::MakeCase(name, warp, landmarks, seed));
+      RunCase(warp, RegistrationCases::MakeCase(name, warp, landmarks, seed), settings);
     }
   }
   return 0;
