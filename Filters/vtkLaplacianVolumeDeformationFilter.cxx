@@ -2,6 +2,7 @@
 
 #include "EditPipeline.h"
 #include "RestShape.h"
+#include "Stopwatch.h"
 #include "VolumeFollower.h"
 
 #include "vtkCallbackCommand.h"
@@ -32,6 +33,7 @@ struct vtkLaplacianVolumeDeformationFilter::vtkInternals
   vtkNew<vtkCallbackCommand> CommitObserver;
   vtkNew<vtkCallbackCommand> ProgressObserver; // the boundary's edit, during this filter's
   vtkMTimeType ArrayTime = 0; // of the array selection last handed to the surface filter
+  bool Settling = false;       // the last update's settle stopped at SettleTimeLimit
 };
 
 vtkLaplacianVolumeDeformationFilter::vtkLaplacianVolumeDeformationFilter()
@@ -142,7 +144,9 @@ int vtkLaplacianVolumeDeformationFilter::RequestData(
 
 bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output)
 {
+  const LaplacianEditing::Stopwatch watch;
   vtkInternals& internals = *this->Internals;
+  internals.Settling = false;
   vtkPoints* rest = internals.Rest.Get(input)->GetPoints();
   std::string error = internals.Follower.Update(input, rest);
   if (!error.empty())
@@ -194,7 +198,12 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
   lep::VolumeFollower::Settings settings;
   settings.Iterations = this->VolumeIterations;
   settings.DragIterations = this->DragVolumeIterations;
-  settings.Dragging = surface->GetDragging() != 0;
+  // A boundary whose settle the time limit cut is followed as a drag step follows it; the
+  // interior settles once the boundary has, within what is left of the limit.
+  const bool boundarySettling = surface->GetSettling() != 0;
+  settings.Dragging = surface->GetDragging() != 0 || boundarySettling;
+  const double limit = surface->GetSettleTimeLimit();
+  settings.TimeLimit = limit > 0.0 ? std::max(1e-9, limit - watch.Seconds()) : 0.0;
   // The volume is solved on one process: a surface solved by MUMPS has its volume by CHOLMOD.
   settings.Backend = surface->GetSolver() == vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT
     ? LaplacianEditing::SolverBackend::SimplicialLDLT
@@ -207,7 +216,32 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
     vtkErrorMacro(<< error);
     return false;
   }
+  internals.Settling = boundarySettling || internals.Follower.GetFacts().OutOfTime;
   return true;
+}
+
+void vtkLaplacianVolumeDeformationFilter::SetSettleTimeLimit(double seconds)
+{
+  this->Internals->Surface->SetSettleTimeLimit(seconds);
+}
+
+double vtkLaplacianVolumeDeformationFilter::GetSettleTimeLimit()
+{
+  return this->Internals->Surface->GetSettleTimeLimit();
+}
+
+vtkTypeBool vtkLaplacianVolumeDeformationFilter::GetSettling()
+{
+  return this->Internals->Settling;
+}
+
+void vtkLaplacianVolumeDeformationFilter::ContinueSettling()
+{
+  if (this->Internals->Settling)
+  {
+    this->Internals->Surface->ContinueSettling(); // if its own settle was the one cut
+    this->Modified();
+  }
 }
 
 void vtkLaplacianVolumeDeformationFilter::SurfaceCommitted()
@@ -443,6 +477,7 @@ void vtkLaplacianVolumeDeformationFilter::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "DragVolumeIterations: " << this->DragVolumeIterations << "\n";
   os << indent << "NumberOfCommits: " << this->GetNumberOfCommits() << "\n";
   os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
+  os << indent << "Settling: " << (this->Internals->Settling ? "Yes" : "No") << "\n";
   const lep::VolumeFollower::Facts& facts = this->Internals->Follower.GetFacts();
   os << indent << "Last update: " << facts.ZonePoints << " zone points, " << facts.ZoneTetrahedra
      << " corner tetrahedra, " << facts.Iterations << " iterations, " << facts.Growths

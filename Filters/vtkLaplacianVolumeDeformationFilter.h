@@ -120,6 +120,20 @@ public:
   vtkTypeBool GetDragging();
   vtkBooleanMacro(Dragging, vtkTypeBool);
   /**
+   * The most seconds an update that is not a drag step settles, boundary and interior together
+   * (default 0: no limit). The boundary's settle stops at the surface filter's SettleTimeLimit
+   * (this one), the interior then following that boundary as in a drag step; or the interior's
+   * settle stops after its iteration at hand, every cell positive. GetSettling() is then true,
+   * and each ContinueSettling() and update goes on from there until the settle is done. The
+   * ParaView handle panel sets half a second, so that a release never holds the GUI for long.
+   */
+  void SetSettleTimeLimit(double seconds);
+  double GetSettleTimeLimit();
+  /** Whether the last update stopped its settle at SettleTimeLimit with work left. */
+  vtkTypeBool GetSettling();
+  /** Marks the filter modified while GetSettling(): the next update goes on settling. */
+  void ContinueSettling();
+  /**
    * Make the current result the rest shape of the next edit, the whole volume's (the surface
    * filter's CommitEdit; committing through the surface filter, as a widget does, commits the
    * volume too).

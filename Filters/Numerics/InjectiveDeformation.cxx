@@ -868,15 +868,19 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
         }
         const double decrease = energy - trialEnergy;
         energy = trialEnergy;
-        if (options.Progress &&
-          !options.Progress(static_cast<double>(report.Iterations) / options.MaximumIterations))
-        {
-          report.Stopped = true;
-          break;
-        }
+        const bool proceed = !options.Progress ||
+          options.Progress(static_cast<double>(report.Iterations) / options.MaximumIterations);
+        // An iterate that converged at the final pull is the result, stopped or not: a solve
+        // stopped after each iteration (a settle split by a time limit) still ends.
         const double tolerance = weight < this->FinalWeight ? StageTolerance : options.Tolerance;
         if (decrease <= tolerance * energy)
         {
+          report.Stopped = !proceed && weight < this->FinalWeight;
+          break;
+        }
+        if (!proceed)
+        {
+          report.Stopped = true;
           break;
         }
       }

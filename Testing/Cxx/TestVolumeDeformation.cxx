@@ -470,6 +470,98 @@ TEST(VolumeDeformation, SettleReportsProgressStopsWhereAbortedAndTheNextReleaseS
   EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
 }
 
+namespace
+{
+// The beam's drag released twice, in ARAP or in rotation mode None: in full, and with a time
+// limit that every iteration reaches (1 ns), continued update by update (ContinueSettling)
+// until it is done, as the ParaView panel does. Checks that every update's volume has every
+// cell positive, and that the split settle ends with every target met, on the uncut settle's
+// shape to 1e-4 of the beam's length. Returns the split settle's updates, those in which the
+// boundary's settle was cut, and the interior's settle iterations in all, with the uncut's.
+struct SplitSettle
+{
+  int Updates = 0, BoundaryUpdates = 0, Iterations = 0, UncutIterations = 0;
+};
+
+SplitSettle SettleSplitByATimeLimit(bool rigid)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  auto released = [&]() {
+    vtkSmartPointer<Filter> filter = BeamEdit(beam);
+    rigid ? filter->SetRotationModeToAsRigidAsPossible() : filter->SetRotationModeToNone();
+    const double lift[3] = { 0.0, 0.0, 0.3 };
+    filter->DraggingOn();
+    filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -30.0, lift));
+    filter->Update();
+    filter->DraggingOff();
+    return filter;
+  };
+  SplitSettle split;
+  vtkSmartPointer<Filter> uncut = released();
+  uncut->Update();
+  EXPECT_EQ(uncut->GetSettling(), 0);
+  split.UncutIterations = uncut->GetNumberOfVolumeIterations();
+
+  vtkSmartPointer<Filter> filter = released();
+  filter->SetSettleTimeLimit(1e-9);
+  filter->Update();
+  for (split.Updates = 1; filter->GetSettling() && split.Updates < 1000; ++split.Updates)
+  {
+    EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0) << "update " << split.Updates;
+    if (filter->GetSurfaceFilter()->GetSettling())
+    {
+      ++split.BoundaryUpdates; // the interior followed as a drag step
+      EXPECT_EQ(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
+    }
+    else
+    {
+      split.Iterations += filter->GetNumberOfVolumeIterations();
+      EXPECT_EQ(filter->GetNumberOfVolumeIterations(), 1) << "update " << split.Updates;
+    }
+    filter->ContinueSettling();
+    filter->Update();
+  }
+  split.Iterations += filter->GetNumberOfVolumeIterations();
+  EXPECT_EQ(filter->GetSettling(), 0);
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    largest = std::max(largest,
+      Distance(filter->GetOutput()->GetPoint(i), uncut->GetOutput()->GetPoint(i)));
+  }
+  std::printf("%s: %d updates, %d of them the boundary's; the interior's settle %d iterations "
+              "against the uncut's %d; %.3g of the beam's length from the uncut settle\n",
+    rigid ? "ARAP" : "None", split.Updates, split.BoundaryUpdates, split.Iterations,
+    split.UncutIterations, largest / 8.0);
+  EXPECT_LT(largest, 1e-4 * 8.0);
+
+  // Without the limit, a release settles in one update.
+  filter->SetSettleTimeLimit(0.0);
+  GrabAndRelease(filter);
+  EXPECT_EQ(filter->GetSettling(), 0);
+  return split;
+}
+}
+
+TEST(VolumeDeformation, ABoundarySettleSplitByATimeLimitEndsOnTheUncutSettlesShape)
+{
+  // ARAP: the boundary's settle is cut at every iteration, the interior following it.
+  const SplitSettle split = SettleSplitByATimeLimit(true);
+  EXPECT_GT(split.BoundaryUpdates, 1);
+}
+
+TEST(VolumeDeformation, AnInteriorSettleSplitByATimeLimitEndsOnTheUncutSettlesShape)
+{
+  // Rotation mode None solves the boundary at once: the interior's settle is cut at every
+  // iteration, and goes on from there, in no more iterations than the uncut settle's.
+  const SplitSettle split = SettleSplitByATimeLimit(false);
+  EXPECT_EQ(split.BoundaryUpdates, 0);
+  EXPECT_GT(split.Updates, 2);
+  EXPECT_LE(split.Iterations, split.UncutIterations);
+}
+
 TEST(VolumeDeformation, AnAbortDuringTheBoundarysSettleEndsTheUpdateAtAValidVolume)
 {
   // Aborted at the boundary's first settle event (its edit's last tenth, (0.37, 0.4) of the

@@ -97,9 +97,13 @@ std::string VolumeFollower::FollowEdit(const OutputEdit* edit, vtkPoints* edited
   else
   {
     vtkAlgorithm* filter = this->Filter;
-    settings.Progress = [filter, from, to](double done) {
+    const Stopwatch watch;
+    const double limit = settings.TimeLimit;
+    bool& outOfTime = this->LastFacts.OutOfTime; // Follow clears it before the first call
+    settings.Progress = [filter, from, to, watch, limit, &outOfTime](double done) {
       filter->UpdateProgress(from + (to - from) * done);
-      return !filter->GetAbortExecute();
+      outOfTime = limit > 0.0 && watch.Seconds() >= limit;
+      return !filter->GetAbortExecute() && !outOfTime;
     };
     const std::string error = this->Follow(edit->Moved->Ids, edited, edit->RegionVersion, settings);
     if (!error.empty())
@@ -120,6 +124,7 @@ std::string VolumeFollower::FollowEdit(const OutputEdit* edit, vtkPoints* edited
 void VolumeFollower::Reset()
 {
   this->Followed = false;
+  this->CutSettleIterations = 0;
   this->LastFacts = Facts();
 }
 
@@ -163,6 +168,7 @@ std::string VolumeFollower::SelectZone(const std::vector<vtkIdType>& moved, cons
   }
   std::sort(this->Movable.begin(), this->Movable.end());
   this->Solution = local; // the zone starts at rest
+  this->CutSettleIterations = 0;
   this->LastFacts.SetupTime += watch.Seconds();
   return error;
 }
@@ -204,20 +210,11 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     }
     this->Region = region;
   }
-  InjectiveOptions options;
-  options.MaximumIterations = settings.Dragging ? settings.DragIterations : settings.Iterations;
-  // A drag step, and a release, start near their targets (the release at the drag's end): the
-  // pull is as stiff as it will be from the start. Only a settle from rest loosens it first.
-  options.Continuation = !settings.Dragging && !fromDrag;
-  options.Reweight = !settings.Dragging;
-  if (!settings.Dragging)
-  {
-    options.Progress = settings.Progress;
-  }
-  for (;;)
-  {
+  // The targets, in the zone's rows and frame.
+  Positions targets;
+  auto frameTargets = [&]() {
     const int n = static_cast<int>(this->Zone.Points.size());
-    Positions targets = Positions::Zero(n, 3);
+    targets.setZero(n, 3);
     this->Edited.setZero(n, 3);
     for (int row = 0; row < n; ++row)
     {
@@ -226,6 +223,34 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
         this->Edited.row(row) = Point(edited, this->Zone.Points[row]).transpose();
         targets.row(row) = this->Edited.row(row) - this->Center.transpose();
       }
+    }
+  };
+  frameTargets();
+  // A settle of the targets that a time limit cut goes on with the iterations left.
+  const bool resumed = !settings.Dragging && this->CutSettleIterations > 0 &&
+    targets.rows() == this->CutSettleTargets.rows() && targets == this->CutSettleTargets;
+  if (!resumed)
+  {
+    this->CutSettleIterations = 0;
+  }
+  InjectiveOptions options;
+  options.MaximumIterations = settings.Dragging
+    ? settings.DragIterations
+    : std::max(1, settings.Iterations - this->CutSettleIterations);
+  // A drag step, and a release, start near their targets (the release at the drag's end): the
+  // pull is as stiff as it will be from the start. Only a settle from rest loosens it first; a
+  // settle that goes on after a cut keeps its proxy's weights and pulls at the final weight.
+  options.Continuation = !settings.Dragging && !fromDrag && !resumed;
+  options.Reweight = !settings.Dragging;
+  if (!settings.Dragging)
+  {
+    options.Progress = settings.Progress;
+  }
+  for (bool first = true;; first = false)
+  {
+    if (!first)
+    {
+      frameTargets(); // the grown zone's
     }
     const Stopwatch watch;
     const InjectiveReport report =
@@ -240,6 +265,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     this->LastFacts.Factorizations += report.Factorizations;
     this->LastFacts.LargestMiss = report.LargestMiss;
     this->LastFacts.Stopped = report.Stopped;
+    this->CutSettleIterations += settings.Dragging ? 0 : report.Iterations;
     if (report.LargestMiss <= this->Snap || settings.Dragging || report.Stopped ||
       this->Zone.Complete)
     {
@@ -264,6 +290,16 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     }
   }
   this->Dragged = settings.Dragging;
+  if (this->LastFacts.OutOfTime && this->LastFacts.Stopped &&
+    this->CutSettleIterations < settings.Iterations)
+  {
+    this->CutSettleTargets = targets;
+  }
+  else
+  {
+    this->CutSettleIterations = 0;
+    this->LastFacts.OutOfTime = false; // done, or no iterations left
+  }
   this->LastFacts.ZonePoints = static_cast<int>(this->Zone.Points.size());
   this->LastFacts.ZoneTetrahedra = static_cast<int>(this->Zone.Tets.rows());
   // A stopped settle did not follow the edit: a commit settles it first.

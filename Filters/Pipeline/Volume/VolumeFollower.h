@@ -53,6 +53,10 @@ public:
     /// A settle's progress after each iteration (share of Iterations); returning false stops it
     /// there, every cell still positive (InjectiveOptions::Progress). Unused by drag steps.
     std::function<bool(double)> Progress;
+    /// FollowEdit: the seconds a settle may take (0: no limit). Past them it stops after the
+    /// iteration at hand (Facts::OutOfTime), and the next settle of the same targets goes on
+    /// from there, with the iterations left.
+    double TimeLimit = 0.0;
   };
 
   /// What the last Follow did.
@@ -65,8 +69,10 @@ public:
     /// Times the zone grew to meet its targets.
     int Growths = 0;
     int FailedCells = 0;
-    /// Whether Settings::Progress stopped the settle short.
+    /// Whether Settings::Progress stopped the settle short, and whether the time limit did with
+    /// iterations left (the next settle of the same targets goes on).
     bool Stopped = false;
+    bool OutOfTime = false;
     double LargestMiss = 0.0;
     double SetupTime = 0.0;
     double SolveTime = 0.0;
@@ -134,6 +140,10 @@ private:
   std::uint64_t Region = 0;
   bool Followed = false;
   bool Dragged = false; // the zone holds a drag step's result
+  // The iterations a settle cut by its time limit ran so far (0: none was cut), and the
+  // targets it was settling towards: the next settle of the same ones goes on from there.
+  int CutSettleIterations = 0;
+  Positions CutSettleTargets;
   std::vector<vtkIdType> Movable;
   std::vector<double> ZoneQuality; // of the zone's cells
   std::vector<char> Failed;         // of the zone's cells: 1 on a failed one (EditFailed)
