@@ -777,41 +777,51 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   // whole zone turn and shear towards the targets before a stiff one puts the boundary on them,
   // where a stiff pull from the start drags the boundary ahead of the interior and the steps
   // stall at the first flattened cell.
-  // The targets' pull in stages, loose to stiff: the continuation.
   std::vector<double> stages{ this->FinalWeight };
   while (stages.back() / ContinuationRatio >= FirstWeight)
   {
     stages.push_back(stages.back() / ContinuationRatio);
   }
   std::reverse(stages.begin(), stages.end());
-  // Without it, the final pull; a solve that may not factor (a drag step) pulls as stiffly as
-  // the factor it finds.
-  const bool keepFactor = !options.Reweight && this->FactoredWeight > 0.0;
-  std::vector<double> weights = options.Continuation
-    ? stages
-    : std::vector<double>{ keepFactor ? this->FactoredWeight : this->FinalWeight };
   // Where targets are left short, the solve goes on from where it ended. Without a continuation
   // (a release from a drag's end), targets a little short are first taken for where the pull
   // balances the mesh, a shortfall that falls as the pull stiffens: one stiffer stage. Otherwise
   // (a stall at a flattening cell) the stages run from a loose pull: the stall that left the
   // targets is rarely met twice.
   const int rounds = options.Continuation ? 2 : 3;
-  bool stiffened = false;
-  double energy = still ? 0.0 : Infinity;
-  for (int round = 0; round < rounds && report.Iterations < options.MaximumIterations && !still &&
-       !report.Stopped;
-       ++round)
+  // Where the loops stand: a new solve's start, or where Progress stopped the last one.
+  SolveState state;
+  if (options.Resume && this->Cut.Active)
   {
-    if (round > 0)
+    state = this->Cut;
+    points = state.Iterate; // the iterate before its snap
+  }
+  else
+  {
+    // Without a continuation, the final pull; a solve that may not factor (a drag step) pulls
+    // as stiffly as the factor it finds.
+    const bool keepFactor = !options.Reweight && this->FactoredWeight > 0.0;
+    state.Weights = options.Continuation
+      ? stages
+      : std::vector<double>{ keepFactor ? this->FactoredWeight : this->FinalWeight };
+    state.Energy = still ? 0.0 : Infinity;
+  }
+  this->Cut.Active = false;
+  double& energy = state.Energy;
+  for (; state.Round < rounds && report.Iterations < options.MaximumIterations && !still &&
+       !report.Stopped;
+       ++state.Round, state.Stage = 0)
+  {
+    if (state.Round > 0 && state.Stage == 0 && state.StageIterations == 0)
     {
       const double miss = this->LargestMiss(points, targets);
       if (snap <= 0.0 || miss <= snap)
       {
         break;
       }
-      const bool stiffen = !options.Continuation && !stiffened && miss <= NearMiss * snap;
-      weights = stiffen ? std::vector<double>{ weights.back() * ContinuationRatio } : stages;
-      stiffened = stiffened || stiffen;
+      const bool stiffen = !options.Continuation && !state.Stiffened && miss <= NearMiss * snap;
+      state.Weights = stiffen ? std::vector<double>{ state.Weights.back() * ContinuationRatio } : stages;
+      state.Stiffened = state.Stiffened || stiffen;
       if (!stiffen)
       {
         // From a loose pull, from the rest stiffness, as any continuation starts.
@@ -819,26 +829,31 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
         this->FactoredWeight = 0.0;
       }
     }
-    for (double weight : weights)
+    for (; state.Stage < state.Weights.size(); ++state.Stage, state.StageIterations = 0)
     {
       if (report.Iterations >= options.MaximumIterations || report.Stopped)
       {
         break;
       }
+      const double weight = state.Weights[state.Stage];
       report.Error = this->FactorAt(weight, report);
       if (!report.Error.empty())
       {
         break;
       }
       this->Lambda = weight;
-      Positions previous = points;
-      for (int stageIterations = 0; report.Iterations < options.MaximumIterations; ++stageIterations)
+      if (state.StageIterations == 0)
+      {
+        state.Previous = points;
+      }
+      Positions& previous = state.Previous;
+      for (; report.Iterations < options.MaximumIterations; ++state.StageIterations)
       {
         ++report.Iterations;
         // AQP: the step starts from x + theta (x - x_before), theta short of any flat tetrahedron.
         bool accepted = false;
         double trialEnergy = Infinity;
-        if (options.Accelerate && stageIterations > 0)
+        if (options.Accelerate && state.StageIterations > 0)
         {
           const Positions momentum = points - previous;
           const double theta = std::min(Momentum,
@@ -873,14 +888,27 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
         // An iterate that converged at the final pull is the result, stopped or not: a solve
         // stopped after each iteration (a settle split by a time limit) still ends.
         const double tolerance = weight < this->FinalWeight ? StageTolerance : options.Tolerance;
-        if (decrease <= tolerance * energy)
+        const bool converged = decrease <= tolerance * energy;
+        if (!proceed && !(converged && weight >= this->FinalWeight))
         {
-          report.Stopped = !proceed && weight < this->FinalWeight;
+          // Where a resumed solve goes on: the next iteration of this stage, or the next stage.
+          report.Stopped = true;
+          this->Cut = state;
+          this->Cut.Active = true;
+          this->Cut.Iterate = points;
+          if (converged)
+          {
+            ++this->Cut.Stage;
+            this->Cut.StageIterations = 0;
+          }
+          else
+          {
+            ++this->Cut.StageIterations;
+          }
           break;
         }
-        if (!proceed)
+        if (converged)
         {
-          report.Stopped = true;
           break;
         }
       }

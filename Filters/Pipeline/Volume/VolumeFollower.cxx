@@ -238,9 +238,10 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     ? settings.DragIterations
     : std::max(1, settings.Iterations - this->CutSettleIterations);
   // A drag step, and a release, start near their targets (the release at the drag's end): the
-  // pull is as stiff as it will be from the start. Only a settle from rest loosens it first; a
-  // settle that goes on after a cut keeps its proxy's weights and pulls at the final weight.
-  options.Continuation = !settings.Dragging && !fromDrag && !resumed;
+  // pull is as stiff as it will be from the start. Only a settle from rest loosens it first. A
+  // settle that goes on after a cut goes on where the solver stopped, as if uncut.
+  options.Continuation = resumed ? this->CutSettleContinuation : !settings.Dragging && !fromDrag;
+  options.Resume = resumed;
   options.Reweight = !settings.Dragging;
   if (!settings.Dragging)
   {
@@ -294,6 +295,7 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     this->CutSettleIterations < settings.Iterations)
   {
     this->CutSettleTargets = targets;
+    this->CutSettleContinuation = options.Continuation;
   }
   else
   {
