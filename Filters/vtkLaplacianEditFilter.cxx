@@ -95,7 +95,9 @@ bool vtkLaplacianEditFilter::FollowBoundary(
 {
   const lep::OutputEdit edit = this->Pipeline->GetEdit();
   lep::VolumeFollower::Settings settings;
-  settings.Dragging = this->Dragging != 0;
+  // A boundary whose settle SettleTimeLimit cut is followed as a drag step follows it; the
+  // interior settles in full once the boundary has (as in vtkLaplacianVolumeDeformationFilter).
+  settings.Dragging = this->Dragging != 0 || this->Pipeline->IsSettling();
   settings.Backend = static_cast<le::SolverBackend>(this->Solver);
   if (!this->Pipeline->Check(this->Volume->FollowEdit(
         &edit, edited, settings, output, this->OutputDisplacement != 0, from, to)))

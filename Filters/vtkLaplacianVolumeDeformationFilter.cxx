@@ -202,7 +202,7 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
   // interior settles once the boundary has, within what is left of the limit.
   const bool boundarySettling = surface->GetSettling() != 0;
   settings.Dragging = surface->GetDragging() != 0 || boundarySettling;
-  const double limit = surface->GetSettleTimeLimit();
+  const double limit = this->SettleTimeLimit;
   settings.TimeLimit = limit > 0.0 ? std::max(1e-9, limit - watch.Seconds()) : 0.0;
   // The volume is solved on one process: a surface solved by MUMPS has its volume by CHOLMOD.
   settings.Backend = surface->GetSolver() == vtkLaplacianDeformationFilter::SOLVER_SIMPLICIAL_LDLT
@@ -222,12 +222,15 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
 
 void vtkLaplacianVolumeDeformationFilter::SetSettleTimeLimit(double seconds)
 {
+  // The surface filter's too; one set on the surface filter alone (by an application that
+  // continues the surface's settle) leaves the interior's uncut, so that it still ends settled.
+  seconds = std::min(std::max(seconds, 0.0), 3600.0);
   this->Internals->Surface->SetSettleTimeLimit(seconds);
-}
-
-double vtkLaplacianVolumeDeformationFilter::GetSettleTimeLimit()
-{
-  return this->Internals->Surface->GetSettleTimeLimit();
+  if (this->SettleTimeLimit != seconds)
+  {
+    this->SettleTimeLimit = seconds;
+    this->Modified();
+  }
 }
 
 vtkTypeBool vtkLaplacianVolumeDeformationFilter::GetSettling()
@@ -477,6 +480,7 @@ void vtkLaplacianVolumeDeformationFilter::PrintSelf(ostream& os, vtkIndent inden
   os << indent << "DragVolumeIterations: " << this->DragVolumeIterations << "\n";
   os << indent << "NumberOfCommits: " << this->GetNumberOfCommits() << "\n";
   os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
+  os << indent << "SettleTimeLimit: " << this->SettleTimeLimit << " s\n";
   os << indent << "Settling: " << (this->Internals->Settling ? "Yes" : "No") << "\n";
   const lep::VolumeFollower::Facts& facts = this->Internals->Follower.GetFacts();
   os << indent << "Last update: " << facts.ZonePoints << " zone points, " << facts.ZoneTetrahedra

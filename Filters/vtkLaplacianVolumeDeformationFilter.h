@@ -126,9 +126,12 @@ public:
    * settle stops after its iteration at hand, every cell positive. GetSettling() is then true,
    * and each ContinueSettling() and update goes on from there until the settle is done. The
    * ParaView handle panel sets half a second, so that a release never holds the GUI for long.
+   * Setting it here sets the surface filter's too; a limit set on the surface filter alone (a
+   * handle widget paired with it continues only the surface's settle) cuts only the boundary's,
+   * the interior following it and then settling in full.
    */
   void SetSettleTimeLimit(double seconds);
-  double GetSettleTimeLimit();
+  vtkGetMacro(SettleTimeLimit, double);
   /** Whether the last update stopped its settle at SettleTimeLimit with work left. */
   vtkTypeBool GetSettling();
   /** Marks the filter modified while GetSettling(): the next update goes on settling. */
@@ -202,6 +205,7 @@ protected:
   int VolumeIterations = 300;
   int DragVolumeIterations = 1;
   vtkTypeBool OutputDisplacement = 0;
+  double SettleTimeLimit = 0.0;
 
 private:
   vtkLaplacianVolumeDeformationFilter(const vtkLaplacianVolumeDeformationFilter&) = delete;

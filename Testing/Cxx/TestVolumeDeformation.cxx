@@ -11,6 +11,7 @@
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
@@ -581,6 +582,39 @@ TEST(VolumeDeformation, ASettleFromRestSplitByATimeLimitEndsOnTheUncutSettlesSha
   EXPECT_EQ(split.Distance, 0.0);
 }
 
+TEST(VolumeDeformation, ALimitOnTheSurfaceFilterAloneCutsOnlyTheBoundarysSettle)
+{
+  // A handle widget paired with the surface filter continues the surface's settle only: with
+  // the limit set there, the interior follows the boundary's steps and then settles in full,
+  // so that the volume ends settled, every target met, near the uncut settle.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkSmartPointer<Filter> uncut = ReleasedBeamDrag(beam);
+  uncut->Update();
+  vtkSmartPointer<Filter> filter = ReleasedBeamDrag(beam);
+  vtkLaplacianDeformationFilter* surface = filter->GetSurfaceFilter();
+  surface->SetSettleTimeLimit(1e-9);
+  EXPECT_EQ(filter->GetSettleTimeLimit(), 0.0);
+  filter->Update();
+  int updates = 1;
+  for (; surface->GetSettling() && updates < 1000; ++updates)
+  {
+    EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0) << "update " << updates;
+    surface->ContinueSettling(); // what the widget does
+    filter->Update();
+  }
+  EXPECT_GT(updates, 2);
+  EXPECT_EQ(filter->GetSettling(), 0);
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    largest = std::max(largest,
+      Distance(filter->GetOutput()->GetPoint(i), uncut->GetOutput()->GetPoint(i)));
+  }
+  EXPECT_LT(largest / 8.0, 1e-4);
+}
+
 TEST(VolumeDeformation, AnAbortDuringTheBoundarysSettleEndsTheUpdateAtAValidVolume)
 {
   // Aborted at the boundary's first settle event (its edit's last tenth, (0.37, 0.4) of the
@@ -841,6 +875,61 @@ TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
     }
   }
   EXPECT_EQ(interior, 1);
+}
+
+TEST(VolumeDeformation, AWarpedVolumesSettleSplitByATimeLimitEndsSettled)
+{
+  // The landmark warp of a volume with a SettleTimeLimit that every step reaches, continued
+  // update by update as the Landmark Drag panel does: the interior follows each step of the
+  // boundary's settle as a drag step, every cell positive, and settles in full with the last
+  // one, near the uncut warp's volume (1e-4 of the beam's length).
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkNew<vtkPoints> sources, targets;
+  for (double y : { 0.0, 1.0 })
+  {
+    for (double z : { 0.0, 1.0 })
+    {
+      sources->InsertNextPoint(8.0, y, z);
+      targets->InsertNextPoint(8.0, y + 1.0, z + 1.5);
+      sources->InsertNextPoint(0.0, y, z);
+      targets->InsertNextPoint(0.0, y, z);
+    }
+  }
+  auto warped = [&](double limit) {
+    auto warp = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
+    warp->SetInputData(beam);
+    warp->SetSourceLandmarks(sources);
+    warp->SetTargetLandmarks(targets);
+    warp->SetSettleTimeLimit(limit);
+    return warp;
+  };
+  auto uncut = warped(0.0);
+  uncut->Update();
+  auto cut = warped(1e-9);
+  int updates = 0;
+  do
+  {
+    cut->ContinueSettling();
+    cut->Update();
+    ++updates;
+    ASSERT_EQ(cut->GetErrorCode(), vtkErrorCode::NoError);
+    EXPECT_EQ(VolumeMeshes::Measure(vtkUnstructuredGrid::SafeDownCast(cut->GetOutput())).Inverted, 0)
+      << "update " << updates;
+  } while (cut->GetSettling() && updates < 1000);
+  EXPECT_GT(updates, 2);
+  EXPECT_LT(cut->GetMaximumLandmarkDistance(), 1e-6 * beam->GetLength());
+  auto* cutGrid = vtkUnstructuredGrid::SafeDownCast(cut->GetOutput());
+  auto* uncutGrid = vtkUnstructuredGrid::SafeDownCast(uncut->GetOutput());
+  ASSERT_NE(cutGrid, nullptr);
+  ASSERT_NE(uncutGrid, nullptr);
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
+  {
+    largest = std::max(largest, Distance(cutGrid->GetPoint(i), uncutGrid->GetPoint(i)));
+  }
+  std::printf("a warped volume's settle in %d updates: %.2e of the beam's length from the uncut "
+              "warp's\n", updates, largest / 8.0);
+  EXPECT_LT(largest / 8.0, 1e-4);
 }
 
 TEST(VolumeDeformation, DisplacementOfTheVolumeAndOfAWarpedGrid)
