@@ -12,7 +12,11 @@ frame first applies the handle's values, as Auto Apply does. Run in the GUI's ow
 MESH is a file ParaView reads, sphere:THETAxPHI for ParaView's Sphere source at those
 resolutions (sphere:2000x1002 has 2M points and carries point normals), or scan:LEVELS:PATH for
 the benchmark's scan (Testing/Support/MeshReader.h's Scan: the surface Loop-subdivided LEVELS
-times, with fine bumps along its normals; scan:3:../shared/data/Armadillo.ply has 2.4M points). The handle sits on point
+times, with fine bumps along its normals; scan:3:../shared/data/Armadillo.ply has 2.4M points),
+or volume:PATH for a volume mesh (VolumeEditBenchmark's cache holds tetgen's: --cache DIR; volume:bar
+is TestGUIVolume.py's bar of 1,600 tetrahedra), edited
+by Laplacian Volume Deformation (as rigid as possible unless MODE says None) and shown as its
+outline with a Clip through its centre shown as a surface, as issue 48 measures it. The handle sits on point
 0 (on a sphere, the point nearest (0.5, 0, 0), on the equator) with a radius of 3% of the
 bounding-box diagonal, or a third of the ROI radius if that is less; the ROI radius is
 ROI_FRACTION of the diagonal; FRAMES defaults to 60; MODE is the rotation mode name (None,
@@ -88,6 +92,10 @@ def load(mesh_path):
     if mesh_path.startswith("sphere:"):
         theta, phi = (int(n) for n in mesh_path[len("sphere:"):].split("x"))
         return simple.Sphere(ThetaResolution=theta, PhiResolution=phi)
+    if mesh_path == "volume:bar":
+        return simple.Tetrahedralize(Input=simple.Wavelet(WholeExtent=[0, 20, 0, 4, 0, 4]))
+    if mesh_path.startswith("volume:"):
+        return simple.OpenDataFile(mesh_path[len("volume:"):])
     surface = simple.ExtractSurface(Input=simple.OpenDataFile(mesh_path))
     return simple.Triangulate(Input=surface)
 
@@ -98,7 +106,9 @@ def edit(triangles, mesh_path, fraction, mode):
     triangles.UpdatePipeline()
     data = triangles.GetClientSideObject().GetOutputDataObject(0)  # a trivial producer has no GetOutput
     diagonal = data.GetLength()
-    deform = simple.LaplacianDeformation(Input=triangles)
+    volume = mesh_path.startswith("volume:")
+    deform = (simple.LaplacianVolumeDeformation if volume else simple.LaplacianDeformation)(
+        Input=triangles)
     handle = 0
     if mesh_path.startswith("sphere:"):
         from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -107,10 +117,20 @@ def edit(triangles, mesh_path, fraction, mode):
     deform.HandleCenter = list(data.GetPoint(handle))
     deform.HandleRadius = min(0.03, fraction / 3.0) * diagonal
     deform.ROIRadius = fraction * diagonal
-    deform.RotationMode = mode
+    if not volume or mode == "None":
+        deform.RotationMode = mode
     simple.GetLayout().SetSize(800, 600)
     view = simple.GetActiveViewOrCreate("RenderView")
-    simple.Show(deform, view)
+    shown = simple.Show(deform, view)  # the panel shows the handle of a source that is shown
+    if volume:
+        shown.SetRepresentationType("Outline")
+        # Registered without becoming the active source: the panel keeps the volume's handle.
+        from paraview import servermanager
+        clip = servermanager.filters.Clip(Input=deform)
+        servermanager.ProxyManager().RegisterProxy("sources", "Clip1", clip)
+        clip.ClipType.Origin = list(data.GetCenter())
+        clip.ClipType.Normal = [0.0, 1.0, 0.0]
+        simple.Show(clip, view)
     simple.ResetCamera(view)
     simple.Render(view)
     return deform, view
@@ -157,9 +177,15 @@ def main(out):
     still = gui.still_render_seconds(view)
 
     def info(name):
+        """An information property's value; None where the filter has none (a volume's)."""
         deform.UpdatePropertyInformation()
-        return deform.GetProperty(name).SMProperty.GetElement(0)
+        prop = deform.GetProperty(name)
+        return prop.SMProperty.GetElement(0) if prop else None
 
+    volume = mesh_path.startswith("volume:")
+    # What a volume's figures count: its zone's points, the interior's iterations.
+    region = "NumberOfZonePoints" if volume else "NumberOfROIVertices"
+    steps = "NumberOfVolumeIterations" if volume else "NumberOfARAPIterations"
     factorizations = info("NumberOfFactorizations")
     each = []
     for _ in range(drags):
@@ -169,14 +195,15 @@ def main(out):
             later = sorted(previews[1:] or previews)
             each[-1]["preview_ms"] = round(1000.0 * later[len(later) // 2], 2)
     result = {"mesh": os.path.basename(mesh_path), "mode": mode,
-              "roi_vertices": info("NumberOfROIVertices"), "frames": frames,
+              "roi_vertices": info(region), "frames": frames,
               "previewed": previewed, "fps": round(frames / sum(times), 2),
               "still_ms": round(1000.0 * still, 2)}
     result.update(each[0])
     if drags > 1:
         result["later_drag"] = each[-1]
     result["moved"] = math.dist(deform.HandleTranslation, [0.0, 0.0, 0.0])
-    result["refactorizations"] = info("NumberOfFactorizations") - factorizations
+    if factorizations is not None:
+        result["refactorizations"] = info("NumberOfFactorizations") - factorizations
     if not info("Settling"):
         print(json.dumps(result), file=out, flush=True)
         return False
@@ -185,7 +212,7 @@ def main(out):
     # of the loop (the last update's render, then this one's solve and write).
     release_start, turns = result["release_window"]
     turns = [turns]
-    iterations = [info("NumberOfARAPIterations")]
+    iterations = [info(steps)]
     renders = [0]
     window = view.GetRenderWindow()
     window.AddObserver("EndEvent", lambda *_: renders.__setitem__(0, renders[0] + 1))
@@ -200,7 +227,7 @@ def main(out):
 
     def measure_turn(filter):
         turns.append(time.monotonic())
-        iterations.append(info("NumberOfARAPIterations"))
+        iterations.append(info(steps))
         if info("Settling"):
             return
         waits = [b - a for a, b in zip(turns, turns[1:])]
