@@ -727,7 +727,10 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   {
     still = still && (this->Kinds[p] != PointKind::Targeted || targets.row(p) == this->Rest.row(p));
   }
-  if (options.Continuation &&
+  // A solve that goes on where Progress stopped the last one goes on as that one started.
+  const bool resuming = options.Resume && this->Cut.Active;
+  const bool continuation = resuming ? this->Cut.Continuation : options.Continuation;
+  if (continuation && !resuming &&
     std::any_of(this->TetWeights.begin(), this->TetWeights.end(), [](double w) { return w != 1.0; }))
   {
     // A settle starts from the rest stiffness, not from an earlier shape's reweighting.
@@ -788,12 +791,12 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
   // balances the mesh, a shortfall that falls as the pull stiffens: one stiffer stage. Otherwise
   // (a stall at a flattening cell) the stages run from a loose pull: the stall that left the
   // targets is rarely met twice.
-  const int rounds = options.Continuation ? 2 : 3;
+  const int rounds = continuation ? 2 : 3;
   // Where the loops stand: a new solve's start, or where Progress stopped the last one.
   SolveState state;
-  if (options.Resume && this->Cut.Active)
+  if (resuming)
   {
-    state = this->Cut;
+    state = std::move(this->Cut);
     points = state.Iterate; // the iterate before its snap
   }
   else
@@ -801,10 +804,11 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
     // Without a continuation, the final pull; a solve that may not factor (a drag step) pulls
     // as stiffly as the factor it finds.
     const bool keepFactor = !options.Reweight && this->FactoredWeight > 0.0;
-    state.Weights = options.Continuation
+    state.Weights = continuation
       ? stages
       : std::vector<double>{ keepFactor ? this->FactoredWeight : this->FinalWeight };
     state.Energy = still ? 0.0 : Infinity;
+    state.Continuation = continuation;
   }
   this->Cut.Active = false;
   double& energy = state.Energy;
@@ -819,7 +823,7 @@ InjectiveReport InjectiveDeformation::Solve(const Positions& targets, Positions&
       {
         break;
       }
-      const bool stiffen = !options.Continuation && !state.Stiffened && miss <= NearMiss * snap;
+      const bool stiffen = !continuation && !state.Stiffened && miss <= NearMiss * snap;
       state.Weights = stiffen ? std::vector<double>{ state.Weights.back() * ContinuationRatio } : stages;
       state.Stiffened = state.Stiffened || stiffen;
       if (!stiffen)

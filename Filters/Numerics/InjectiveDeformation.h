@@ -59,8 +59,8 @@ struct InjectiveOptions
   /// stops the solve at that iterate, which inverts no tetrahedron the start did not.
   std::function<bool(double)> Progress;
   /// Go on with the solve that Progress stopped last, where it stopped (its stage, momentum and
-  /// iterate before the snap), as if it had not: the caller passes the same targets. Without
-  /// a stopped solve, a new one starts.
+  /// iterate before the snap) and as it started (Continuation), as if it had not: the caller
+  /// passes the same targets. Without a stopped solve, a new one starts.
   bool Resume = false;
 };
 
@@ -156,11 +156,12 @@ private:
   // The corners at each point p, from TetOffsets[p] on: 4 c + i for corner i of tetrahedron c.
   std::vector<int> TetOffsets, PointCorners;
   double Lambda = 0.0;        // the pull's weight in the stage being solved
-  // Where a solve's loops stand: its round of stages, the stage, the iterations in it, the
-  // stages' weights, and the momentum's last iterate and the energy; with the iterate, where
-  // Progress stopped the last solve (Active).
+  // Where a solve's loops stand: whether it started with a continuation, its round of stages,
+  // the stage, the iterations in it, the stages' weights, and the momentum's last iterate and
+  // the energy; with the iterate, where Progress stopped the last solve (Active).
   struct SolveState
   {
+    bool Continuation = true;
     int Round = 0;
     std::size_t Stage = 0;
     int StageIterations = 0;

@@ -240,19 +240,15 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   // A drag step, and a release, start near their targets (the release at the drag's end): the
   // pull is as stiff as it will be from the start. Only a settle from rest loosens it first. A
   // settle that goes on after a cut goes on where the solver stopped, as if uncut.
-  options.Continuation = resumed ? this->CutSettleContinuation : !settings.Dragging && !fromDrag;
+  options.Continuation = !settings.Dragging && !fromDrag;
   options.Resume = resumed;
   options.Reweight = !settings.Dragging;
   if (!settings.Dragging)
   {
     options.Progress = settings.Progress;
   }
-  for (bool first = true;; first = false)
+  for (;;)
   {
-    if (!first)
-    {
-      frameTargets(); // the grown zone's
-    }
     const Stopwatch watch;
     const InjectiveReport report =
       this->Solver.Solve(targets, this->Solution, options, this->Snap, SMPFor);
@@ -289,13 +285,13 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
       this->Solution.row(this->LocalOf[points[row]]) =
         solved.row(static_cast<Eigen::Index>(row)) + (center - this->Center).transpose();
     }
+    frameTargets(); // the grown zone's
   }
   this->Dragged = settings.Dragging;
   if (this->LastFacts.OutOfTime && this->LastFacts.Stopped &&
     this->CutSettleIterations < settings.Iterations)
   {
     this->CutSettleTargets = targets;
-    this->CutSettleContinuation = options.Continuation;
   }
   else
   {

@@ -140,12 +140,11 @@ private:
   std::uint64_t Region = 0;
   bool Followed = false;
   bool Dragged = false; // the zone holds a drag step's result
-  // The iterations a settle cut by its time limit ran so far (0: none was cut), the targets it
-  // was settling towards and whether it started with a continuation: the next settle of the
-  // same targets goes on where the solver stopped (InjectiveOptions::Resume).
+  // The iterations a settle cut by its time limit ran so far (0: none was cut) and the targets
+  // it was settling towards: the next settle of the same targets goes on where the solver
+  // stopped (InjectiveOptions::Resume).
   int CutSettleIterations = 0;
   Positions CutSettleTargets;
-  bool CutSettleContinuation = false;
   std::vector<vtkIdType> Movable;
   std::vector<double> ZoneQuality; // of the zone's cells
   std::vector<char> Failed;         // of the zone's cells: 1 on a failed one (EditFailed)
