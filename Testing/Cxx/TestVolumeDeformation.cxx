@@ -825,21 +825,31 @@ INSTANTIATE_TEST_SUITE_P(BadInput, VolumeErrors,
     BadGrid{ "NaN", &NaNPoint, "NaN" }),
   [](const ::testing::TestParamInfo<BadGrid>& info) { return std::string(info.param.Name); });
 
-TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
+namespace
 {
-  // Landmarks on the beam's boundary: the end x = 8 lifted by 1.5, the end x = 0 held.
-  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
-  vtkNew<vtkPoints> sources, targets;
+// Landmarks on the beam's end corners: those of the end x = 8 moved by (0, dy, dz), those of the
+// end x = 0 held.
+void BeamEndLandmarks(double dy, double dz, vtkPoints* sources, vtkPoints* targets)
+{
   for (double y : { 0.0, 1.0 })
   {
     for (double z : { 0.0, 1.0 })
     {
       sources->InsertNextPoint(8.0, y, z);
-      targets->InsertNextPoint(8.0, y, z + 1.5);
+      targets->InsertNextPoint(8.0, y + dy, z + dz);
       sources->InsertNextPoint(0.0, y, z);
       targets->InsertNextPoint(0.0, y, z);
     }
   }
+}
+}
+
+TEST(VolumeDeformation, LandmarkWarpTakesAVolume)
+{
+  // Landmarks on the beam's boundary: the end x = 8 lifted by 1.5, the end x = 0 held.
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  vtkNew<vtkPoints> sources, targets;
+  BeamEndLandmarks(0.0, 1.5, sources, targets);
   vtkNew<vtkLaplacianLandmarkWarp> warp;
   warp->SetInputData(beam);
   warp->SetSourceLandmarks(sources);
@@ -885,16 +895,7 @@ TEST(VolumeDeformation, AWarpedVolumesSettleSplitByATimeLimitEndsSettled)
   // one, near the uncut warp's volume (1e-4 of the beam's length).
   vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
   vtkNew<vtkPoints> sources, targets;
-  for (double y : { 0.0, 1.0 })
-  {
-    for (double z : { 0.0, 1.0 })
-    {
-      sources->InsertNextPoint(8.0, y, z);
-      targets->InsertNextPoint(8.0, y + 1.0, z + 1.5);
-      sources->InsertNextPoint(0.0, y, z);
-      targets->InsertNextPoint(0.0, y, z);
-    }
-  }
+  BeamEndLandmarks(1.0, 1.5, sources, targets);
   auto warped = [&](double limit) {
     auto warp = vtkSmartPointer<vtkLaplacianLandmarkWarp>::New();
     warp->SetInputData(beam);
