@@ -17,12 +17,12 @@
 // longest after the first, which prepares the zone), and of the surface filter alone on the
 // boundary surface, and the largest distance of a boundary point from its edited position in any
 // step, and the drag's lag: the largest distance of a point at the drag's end from the settled
-// volume of its release (both as shares of the diagonal; --drag-iterations sets the filter's
-// DragVolumeIterations; --settle-limit gives the release a SettleTimeLimit of S seconds and
-// continues it update by update, as the ParaView panel does, reporting the updates and the
-// longest), and the process's peak memory (of the whole run, every method's). --write
-// saves the rest and edited meshes as .vtu for a look in ParaView; --meshes-only makes the meshes
-// and stops.
+// volume of its release, and the release's boundary from the settled update's (as shares of the
+// diagonal; --drag-iterations sets the filter's DragVolumeIterations; --settle-limit gives the
+// release a SettleTimeLimit of S seconds and continues it update by update, as the ParaView
+// panel does, reporting the updates and the longest), and the process's peak memory (of the whole
+// run, every method's). --write saves the rest and edited meshes as .vtu for a look in ParaView;
+// --meshes-only makes the meshes and stops.
 #include "BenchmarkMeasures.h"
 #include "VolumeMeshes.h"
 
@@ -288,6 +288,7 @@ void Run(const std::string& name, double degrees, const Options& options)
     double release = 0.0;  // the volume's release update, boundary and interior
     int releaseIterations = 0, releaseFactorizations = 0, releaseGrowths = 0, releaseUpdates = 1;
     double releaseLongestUpdate = 0.0;
+    double boundaryApart = 0.0; // the release's boundary from the settle's from rest, largest
     for (vtkLaplacianDeformationFilter* surfaceFilter : { dragged->GetSurfaceFilter(), alone.Get() })
     {
       const bool isVolume = surfaceFilter != alone.Get();
@@ -334,6 +335,14 @@ void Run(const std::string& name, double degrees, const Options& options)
           releaseLongestUpdate = std::max(releaseLongestUpdate, updateWatch.Seconds());
         }
         release = releaseWatch.Seconds();
+        vtkPoints* released = dragged->GetSurfaceFilter()->GetOutput()->GetPoints();
+        for (vtkIdType i = 0; i < released->GetNumberOfPoints(); ++i)
+        {
+          double a[3], b[3];
+          released->GetPoint(i, a);
+          surface->GetPoint(i, b);
+          boundaryApart = std::max(boundaryApart, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+        }
       }
       for (vtkIdType i = 0; i < dragEnd->GetNumberOfPoints(); ++i)
       {
@@ -357,6 +366,7 @@ void Run(const std::string& name, double degrees, const Options& options)
               << static_cast<double>(iterations) / options.Drags
               << ", \"largest_drag_miss\": " << dragMiss / rest->GetLength()
               << ", \"drag_lag\": " << dragLag / rest->GetLength()
+              << ", \"release_boundary_from_rest\": " << boundaryApart / rest->GetLength()
               << ", \"release\": " << release << ", \"release_iterations\": " << releaseIterations
               << ", \"release_factorizations\": " << releaseFactorizations
               << ", \"release_growths\": " << releaseGrowths
