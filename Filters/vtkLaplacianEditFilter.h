@@ -174,10 +174,11 @@ public:
   /**
    * As-rigid-as-possible mode: the most local-global iterations per update (0 to 10000), or,
    * where a region above LargeRegionVertices settles, Newton steps. Default 30 for an edit:
-   * brings regions of up to 12k vertices within 2% of the converged energy
-   * (Documentation/quality.md); a large region's settle needs more (a 152k region: 1.7 times
-   * the converged energy after 30 steps, converged after about 70; Documentation/
-   * performance.md); 100 for a warp.
+   * brings regions of up to 12k vertices within 2% of the converged energy from rest
+   * (Documentation/quality.md), but a drag's release after a pull of a tenth of the diagonal
+   * only within 7-8% (5k and 30k vertices); a large region's settle needs more (a 152k
+   * region: 1.7 times the converged energy after 30 steps, converged after about 70; both in
+   * Documentation/performance.md); 100 for a warp.
    */
   vtkSetClampMacro(ARAPIterations, int, 0, 10000);
   vtkGetMacro(ARAPIterations, int);
