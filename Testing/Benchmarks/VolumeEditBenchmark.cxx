@@ -80,6 +80,20 @@ void Configure(
   filter->SetRotationModeToAsRigidAsPossible();
 }
 
+// The largest distance between the same point in `a` and in `b`.
+double LargestDistance(vtkPoints* a, vtkPoints* b)
+{
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+  }
+  return largest;
+}
+
 // The rest grid with its points replaced.
 vtkSmartPointer<vtkUnstructuredGrid> WithPoints(vtkUnstructuredGrid* rest, vtkPoints* points)
 {
@@ -335,21 +349,8 @@ void Run(const std::string& name, double degrees, const Options& options)
           releaseLongestUpdate = std::max(releaseLongestUpdate, updateWatch.Seconds());
         }
         release = releaseWatch.Seconds();
-        vtkPoints* released = dragged->GetSurfaceFilter()->GetOutput()->GetPoints();
-        for (vtkIdType i = 0; i < released->GetNumberOfPoints(); ++i)
-        {
-          double a[3], b[3];
-          released->GetPoint(i, a);
-          surface->GetPoint(i, b);
-          boundaryApart = std::max(boundaryApart, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
-        }
-      }
-      for (vtkIdType i = 0; i < dragEnd->GetNumberOfPoints(); ++i)
-      {
-        double there[3], settled[3];
-        dragEnd->GetPoint(i, there);
-        dragged->GetOutput()->GetPoint(i, settled);
-        dragLag = std::max(dragLag, std::sqrt(vtkMath::Distance2BetweenPoints(there, settled)));
+        dragLag = LargestDistance(dragEnd, dragged->GetOutput()->GetPoints());
+        boundaryApart = LargestDistance(dragged->GetSurfaceFilter()->GetOutput()->GetPoints(), surface);
       }
     }
     std::ostringstream dragFacts;
