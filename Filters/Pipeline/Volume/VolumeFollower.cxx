@@ -274,18 +274,15 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     {
       break;
     }
-    if (report.LargestMiss <= NearMissSnaps * this->Snap)
+    const bool nearMiss = report.LargestMiss <= NearMissSnaps * this->Snap;
+    if (nearMiss && !solvedAgain)
     {
-      if (solvedAgain)
-      {
-        break; // the cells around the points left short are marked EditFailed
-      }
       solvedAgain = true;
       continue;
     }
-    if (this->Zone.Complete)
+    if (nearMiss || this->Zone.Complete)
     {
-      break;
+      break; // the cells around the points left short are marked EditFailed
     }
     // A target missed: the zone may be too tight to let it through.
     const Positions solved = this->Solution;
