@@ -21,8 +21,8 @@
 // diagonal; --drag-iterations sets the filter's DragVolumeIterations; --settle-limit gives the
 // release a SettleTimeLimit of S seconds and continues it update by update, as the ParaView
 // panel does, reporting the updates and the longest), and the process's peak memory (of the whole
-// run, every method's). --write saves the rest and edited meshes as .vtu for a look in ParaView;
-// --meshes-only makes the meshes and stops.
+// run, every method's). --write saves the rest, settled and released meshes as .vtu for a look in
+// ParaView (the released one with its EditFailed cells); --meshes-only makes the meshes and stops.
 #include "BenchmarkMeasures.h"
 #include "VolumeMeshes.h"
 
@@ -268,16 +268,17 @@ void Run(const std::string& name, double degrees, const Options& options)
   harmonicFacts << ", \"seconds\": " << harmonicWatch.Seconds();
   Report(what.str(), "harmonic_extension", WithPoints(rest, harmonic), harmonicFacts.str());
 
-  if (!options.Write.empty())
-  {
-    vtkNew<vtkXMLUnstructuredGridWriter> writer;
-    for (auto [suffix, grid] : { std::make_pair("rest", rest.Get()), std::make_pair("edited", edited) })
+  auto write = [&](const char* suffix, vtkUnstructuredGrid* grid) {
+    if (!options.Write.empty())
     {
+      vtkNew<vtkXMLUnstructuredGridWriter> writer;
       writer->SetInputData(grid);
       writer->SetFileName((options.Write + "/" + name + "-" + suffix + ".vtu").c_str());
       writer->Write();
     }
-  }
+  };
+  write("rest", rest);
+  write("edited", edited);
 
   // A drag to the same pose, from rest, as a widget makes it: the volume filter's steps, and the
   // surface filter's alone.
@@ -376,6 +377,7 @@ void Run(const std::string& name, double degrees, const Options& options)
               << ", \"surface_points\": " << boundary->GetNumberOfPoints()
               << ", \"peak_memory_mb\": " << BenchmarkMeasures::PeakMemoryMegabytes();
     Report(what.str(), "filter_dragged", dragged->GetOutput(), dragFacts.str());
+    write("released", dragged->GetOutput());
   }
 }
 }
