@@ -658,6 +658,7 @@ TEST(VolumeDeformation, UnreachableBoundaryIsReportedNotInverted)
   EXPECT_GT(filter->GetNumberOfFailedCells(), 0);
   EXPECT_NE(warnings.Messages.find("could not follow the edit"), std::string::npos)
     << warnings.Messages;
+  EXPECT_EQ(warnings.Messages.find("sliver"), std::string::npos) << "the cells are cubes";
   EXPECT_EQ(VolumeMeshes::Measure(output).Inverted, 0);
   vtkDataArray* failed = output->GetCellData()->GetArray("EditFailed");
   double marked = 0.0;
@@ -666,6 +667,31 @@ TEST(VolumeDeformation, UnreachableBoundaryIsReportedNotInverted)
     marked += failed->GetTuple1(i);
   }
   EXPECT_EQ(marked, filter->GetNumberOfFailedCells());
+}
+
+TEST(VolumeDeformation, TheFailureWarningCountsSlivers)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> beam = Beam();
+  // Sheared by x += 12 (y - 0.4), every cell's corners have a scaled Jacobian of 1 / sqrt(145),
+  // about 0.083: each failed cell is a sliver at rest. The handle's row y = 0.4 stays in place.
+  vtkPoints* points = beam->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    p[0] += 12.0 * (p[1] - 0.4);
+    points->SetPoint(i, p);
+  }
+  vtkSmartPointer<Filter> filter = BeamEdit(beam);
+  filter->SetHandleCenter(8.0, 0.4, 0.4);
+  filter->SetHandleTranslation(-6.0, 0.0, 0.0);
+  ErrorCatcher warnings(filter, vtkCommand::WarningEvent);
+  filter->Update();
+  ASSERT_GT(filter->GetNumberOfFailedCells(), 0);
+  const std::string counted =
+    std::to_string(filter->GetNumberOfFailedCells()) + " of them were slivers at rest";
+  EXPECT_NE(warnings.Messages.find(counted), std::string::npos) << warnings.Messages;
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
 }
 
 TEST(VolumeDeformation, CommitMakesTheVolumeTheNextRest)

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace LaplacianEditing
 {
@@ -31,6 +32,11 @@ constexpr double MetFraction = 1e-3;
 // zone twice as wide, 9 to 13 s) left 2 or 3 points as short as before, farther out
 // (Documentation/volumes.md).
 constexpr double NearMissSnaps = 10.0;
+// A cell whose scaled Jacobian at rest is below this is a sliver: a step that flattens it further
+// is cut short, so that the points around it may stall short of their targets. On homer's 973k
+// tetrahedra from tetgen, 0.4% of the cells are below 0.08 (the median is 0.54), yet six of the
+// ten cells a release left short were (Documentation/volumes.md).
+constexpr double SliverQuality = 0.1;
 // How much stiffer than the mesh around it a target's pull is.
 constexpr double TargetWeight = 1e4;
 // Moves this small, in diagonals, are rounding.
@@ -357,6 +363,11 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
     }
   });
   this->LastFacts.FailedCells = static_cast<int>(std::count(failed.begin(), failed.end(), 1));
+  this->LastFacts.FailedSlivers = 0;
+  for (std::size_t k = 0; k < cells.size() && this->LastFacts.FailedCells > 0; ++k)
+  {
+    this->LastFacts.FailedSlivers += failed[k] && this->RestQuality->GetValue(cells[k]) < SliverQuality;
+  }
   this->Followed = true;
   return {};
 }
@@ -367,10 +378,20 @@ std::string VolumeFollower::FailureWarning() const
   {
     return {};
   }
-  return std::to_string(this->LastFacts.FailedCells) +
-    " cells could not follow the edit without inverting a cell: boundary points were left up "
-    "to " + std::to_string(this->LastFacts.LargestMiss) +
-    " (mesh units) short of their edited positions (cell array EditFailed).";
+  std::ostringstream warning;
+  warning << this->LastFacts.FailedCells
+          << " cells could not follow the edit without inverting a cell: boundary points were "
+             "left up to "
+          << this->LastFacts.LargestMiss
+          << " (mesh units) short of their edited positions (cell array EditFailed).";
+  if (this->LastFacts.FailedSlivers > 0)
+  {
+    warning << " " << this->LastFacts.FailedSlivers
+            << " of them were slivers at rest (scaled Jacobian below " << SliverQuality
+            << "), which stall the points around them as they flatten: a mesh optimized for "
+               "quality (tetgen's -O, gmsh's Optimize) has fewer.";
+  }
+  return warning.str();
 }
 
 void VolumeFollower::Place()

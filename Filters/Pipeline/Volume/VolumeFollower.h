@@ -69,6 +69,8 @@ public:
     /// Times the zone grew to meet its targets.
     int Growths = 0;
     int FailedCells = 0;
+    /// Of the failed cells, those that were slivers at rest (scaled Jacobian below 0.1).
+    int FailedSlivers = 0;
     /// Whether Settings::Progress stopped the settle short, and whether the time limit did with
     /// iterations left (the next settle of the same targets goes on).
     bool Stopped = false;
