@@ -4,6 +4,8 @@
 #include "FitSource.h"
 #include "FoldGuard.h"
 #include "LandmarkPairs.h"
+#include "SMPFor.h"
+#include "SmoothWarp.h"
 #include "Stopwatch.h"
 #include "TargetMatcher.h"
 
@@ -32,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lep = LaplacianEditing::Pipeline;
 
@@ -57,6 +60,33 @@ constexpr int PoseIterations = 100;
 // spacing (ArapBending.h). Without this, the Armadillo subdivided to 149k vertices turned 1,893
 // triangles over where the 37k template turns one (RegistrationBenchmark --subdivide 1).
 constexpr double CalibratedSpacing = 0.0045;
+// The smooth warp: its centres and the points it is fitted to (spread by farthest points), its
+// smoothness from stiff to loose over the rounds, the point-to-point share of its matches, and
+// each landmark's weight in fitted points (RegistrationBenchmark; template-fitting.md).
+constexpr int WarpCentres = 200;
+constexpr int WarpSamples = 2000;
+constexpr double WarpFirstSmoothness = 0.4;
+constexpr double WarpLastSmoothness = 4e-6;
+constexpr double WarpPointShare = 0.01;
+constexpr double WarpLandmarkWeight = 10.0;
+// The warp's fit replaces the stages' where they stay farther from the target than it does by
+// more than this share of the diagonal (the root-mean-square of the excess point-to-plane
+// distance over the trusted matches): the target is then a strained image of the template,
+// which the stages' rigid prior resists. RegistrationBenchmark's turned head (a smooth shear)
+// exceeds it by 0.42-0.46% in its five cases, its bend (isometric) by 0.07-0.11%.
+constexpr double WarpMisfitMargin = 0.002;
+
+LaplacianEditing::Positions PointRows(vtkPoints* points)
+{
+  LaplacianEditing::Positions rows(points->GetNumberOfPoints(), 3);
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    rows.row(i) << p[0], p[1], p[2];
+  }
+  return rows;
+}
 
 // The mean length of the triangles' edges (interior edges counted twice).
 double MeanEdgeLength(vtkPolyData* surface)
@@ -169,6 +199,7 @@ int vtkLaplacianSurfaceRegistration::RequestData(
   pipeline.BeginUpdate();
   output->ShallowCopy(input);
   this->NumberOfRounds = 0;
+  this->WarpKept = 0;
   this->RMSDistanceToTarget = 0.0;
   this->TrustedFraction = 0.0;
   this->FitTime = 0.0;
@@ -379,7 +410,8 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
   settings.Bending = this->BendingWeight / (fineness * fineness);
   const bool merge = this->MergeCoincidentPoints != 0;
   internals.Guard.Reset(shape->GetNumberOfPoints());
-  const int rounds = this->NumberOfStages * this->RoundsPerStage + (source.LandmarkSources ? 1 : 0);
+  const int rounds = this->WarpRounds + this->NumberOfStages * this->RoundsPerStage +
+    (source.LandmarkSources ? 1 : 0);
   const double share = internals.RoundsShare / rounds;
   auto run = [&](double weight, double splinePrior) {
     pipeline.SetProgressSpan(share * this->NumberOfRounds, share * (this->NumberOfRounds + 1.0));
@@ -400,6 +432,17 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
   // The landmarks' fit (or the pose) put the template near the target: a cloud's normals take
   // their sign from it.
   internals.Matcher.OrientCloud(shape);
+  // The smooth warp, from the landmarks' fit; the stages start from that fit too.
+  vtkNew<vtkPolyData> warped;
+  bool warpStands = false;
+  if (this->WarpRounds > 0)
+  {
+    warped->ShallowCopy(shape);
+    if (!this->Warp(rest, warped, share, warpStands))
+    {
+      return false;
+    }
+  }
   lep::TargetMatcher::Matches& matches = internals.Matches;
   lep::FoldGuard& guard = internals.Guard;
   std::vector<vtkIdType> trusted;
@@ -441,6 +484,157 @@ bool vtkLaplacianSurfaceRegistration::Fit(vtkPolyData* rest, vtkPolyData* shape)
       folded = guard.Check(shape) > 0;
     }
   }
+  // The stages' rigid prior stands unless it keeps the template from the target: a target that
+  // is a strained image of the template, which the warp reaches (WarpMisfitMargin).
+  this->WarpKept = 0;
+  if (warpStands)
+  {
+    const double stages = this->PlaneMisfit(shape), warp = this->PlaneMisfit(warped);
+    if (stages * stages - warp * warp > std::pow(WarpMisfitMargin * internals.Diagonal, 2))
+    {
+      shape->SetPoints(warped->GetPoints());
+      this->WarpKept = 1;
+    }
+  }
+  return true;
+}
+
+
+double vtkLaplacianSurfaceRegistration::PlaneMisfit(vtkPolyData* shape)
+{
+  vtkInternals& internals = *this->Internals;
+  lep::TargetMatcher::Matches& matches = internals.Matches;
+  internals.Matcher.Match(shape, internals.Criteria, matches);
+  double sum = 0.0;
+  vtkIdType trusted = 0;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(matches.Trusted.size()); ++i)
+  {
+    if (matches.Trusted[i])
+    {
+      double p[3];
+      shape->GetPoint(i, p);
+      sum += vtkMath::Distance2BetweenPoints(p, matches.Targets[i].data());
+      ++trusted;
+    }
+  }
+  return trusted > 0 ? std::sqrt(sum / trusted) : std::numeric_limits<double>::infinity();
+}
+
+bool vtkLaplacianSurfaceRegistration::Warp(
+  vtkPolyData* rest, vtkPolyData* shape, double share, bool& stands)
+{
+  stands = false;
+  namespace le = LaplacianEditing;
+  vtkInternals& internals = *this->Internals;
+  // The surface's own points (a volume's boundary keeps the interior's, unused).
+  std::vector<char> used(rest->GetNumberOfPoints(), 0);
+  const vtkIdType* corners = nullptr;
+  vtkIdType count = 0;
+  auto polygons = vtk::TakeSmartPointer(rest->GetPolys()->NewIterator());
+  for (polygons->GoToFirstCell(); !polygons->IsDoneWithTraversal(); polygons->GoToNextCell())
+  {
+    polygons->GetCurrentCell(count, corners);
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      used[corners[k]] = 1;
+    }
+  }
+  const le::Positions all = PointRows(rest->GetPoints());
+  std::vector<int> surfaceRows;
+  for (int i = 0; i < static_cast<int>(used.size()); ++i)
+  {
+    if (used[i])
+    {
+      surfaceRows.push_back(i);
+    }
+  }
+  le::Positions surfacePoints(surfaceRows.size(), 3);
+  for (std::size_t k = 0; k < surfaceRows.size(); ++k)
+  {
+    surfacePoints.row(k) = all.row(surfaceRows[k]);
+  }
+  le::SmoothWarp warp;
+  std::vector<int> centres = le::SmoothWarp::FarthestPoints(surfacePoints, WarpCentres);
+  le::Positions centrePoints(centres.size(), 3);
+  for (std::size_t k = 0; k < centres.size(); ++k)
+  {
+    centrePoints.row(k) = surfacePoints.row(centres[k]);
+  }
+  warp.SetCentres(centrePoints);
+  std::vector<vtkIdType> samples;
+  for (const int sample : le::SmoothWarp::FarthestPoints(surfacePoints, WarpSamples))
+  {
+    samples.push_back(surfaceRows[sample]);
+  }
+  // The landmarks join the samples, point to point, with their targets on every axis.
+  vtkPoints* landmarks = internals.Source.LandmarkSources;
+  const int pairs = landmarks ? static_cast<int>(landmarks->GetNumberOfPoints()) : 0;
+  const int rows = static_cast<int>(samples.size()) + pairs;
+  le::Positions points(rows, 3), matches(rows, 3), normals(rows, 3);
+  Eigen::VectorXd weights(rows);
+  for (int k = 0; k < pairs; ++k)
+  {
+    double p[3], q[3];
+    landmarks->GetPoint(k, p);
+    internals.Source.LandmarkTargets->GetPoint(k, q);
+    const int row = static_cast<int>(samples.size()) + k;
+    points.row(row) << p[0], p[1], p[2];
+    matches.row(row) << q[0], q[1], q[2];
+    normals.row(row).setZero();
+    weights(row) = WarpLandmarkWeight / WarpPointShare;
+  }
+  for (std::size_t k = 0; k < samples.size(); ++k)
+  {
+    points.row(k) = all.row(samples[k]);
+  }
+  lep::TargetMatcher::Matches& found = internals.Matches;
+  // A warp that turns a triangle over on its way to the loosest is set aside whole: the target
+  // is not a smooth map of the template (parts turned about narrow joints, which a smooth map
+  // follows only by shearing them; the articulated Armadillo's folds at its ninth round).
+  lep::FoldGuard folds;
+  folds.Reset(rest->GetNumberOfPoints());
+  folds.Remember(rest);
+  for (int round = 0; round < this->WarpRounds; ++round)
+  {
+    this->UpdateProgress(share * this->NumberOfRounds);
+    if (this->GetAbortExecute())
+    {
+      return false;
+    }
+    internals.Matcher.Match(shape, internals.Criteria, found, &samples);
+    for (std::size_t k = 0; k < samples.size(); ++k)
+    {
+      const vtkIdType i = samples[k];
+      const std::array<double, 3>& m = found.Targets[i];
+      const std::array<double, 3>& n = found.Normals[i];
+      matches.row(k) << m[0], m[1], m[2];
+      normals.row(k) << n[0], n[1], n[2];
+      weights(k) = found.Trusted[i] ? 1.0 : 0.0;
+    }
+    const double progress = this->WarpRounds > 1 ? round / (this->WarpRounds - 1.0) : 1.0;
+    const double smoothness =
+      WarpFirstSmoothness * std::pow(WarpLastSmoothness / WarpFirstSmoothness, progress);
+    if (!warp.Fit(points, matches, normals, weights, smoothness, WarpPointShare))
+    {
+      return true; // too few trusted matches to fit: no warp
+    }
+    const le::Positions displaced = all + warp.Displace(all, lep::SMPFor);
+    // New points: the shape's may still be the template's own.
+    vtkNew<vtkPoints> moved;
+    moved->SetDataTypeToDouble();
+    moved->SetNumberOfPoints(all.rows());
+    for (vtkIdType i = 0; i < all.rows(); ++i)
+    {
+      moved->SetPoint(i, displaced(i, 0), displaced(i, 1), displaced(i, 2));
+    }
+    shape->SetPoints(moved);
+    ++this->NumberOfRounds;
+    if (folds.Check(shape) > 0)
+    {
+      return true;
+    }
+  }
+  stands = true;
   return true;
 }
 
@@ -522,7 +716,11 @@ void vtkLaplacianSurfaceRegistration::WriteOutput(
   vtkNew<vtkDoubleArray> rms;
   rms->SetName("RMSDistanceToTarget");
   rms->InsertNextValue(this->RMSDistanceToTarget);
+  vtkNew<vtkIntArray> warpKept;
+  warpKept->SetName("FitWarpKept");
+  warpKept->InsertNextValue(this->WarpKept);
   output->GetFieldData()->AddArray(rounds);
+  output->GetFieldData()->AddArray(warpKept);
   output->GetFieldData()->AddArray(rms);
 }
 
@@ -530,6 +728,7 @@ void vtkLaplacianSurfaceRegistration::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PoseMode: " << this->PoseMode << "\n";
+  os << indent << "WarpRounds: " << this->WarpRounds << "\n";
   os << indent << "InitialMatchWeight: " << this->InitialMatchWeight << "\n";
   os << indent << "FinalMatchWeight: " << this->FinalMatchWeight << "\n";
   os << indent << "NumberOfStages: " << this->NumberOfStages << "\n";
@@ -540,6 +739,7 @@ void vtkLaplacianSurfaceRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumBindingDistance: " << this->MaximumBindingDistance << "\n";
   os << indent << "LandOnTarget: " << (this->LandOnTarget ? "On" : "Off") << "\n";
   os << indent << "NumberOfRounds: " << this->NumberOfRounds << "\n";
+  os << indent << "WarpKept: " << (this->WarpKept ? "On" : "Off") << "\n";
   os << indent << "RMSDistanceToTarget: " << this->RMSDistanceToTarget << "\n";
   os << indent << "TrustedFraction: " << this->TrustedFraction << "\n";
   os << indent << "FitTime: " << this->FitTime << "\n";

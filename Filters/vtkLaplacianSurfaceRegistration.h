@@ -21,6 +21,10 @@
  *   template's own frame and size, where its as-rigid-as-possible energy knows the template's
  *   details, and the pose is applied to the result;
  * - where landmarks are given, the landmark warp's fit (vtkLaplacianLandmarkWarp) to them;
+ * - a smooth warp of space (WarpRounds rounds): each matches the template to the target and fits
+ *   a spline of space to the matches, point-to-plane, from stiff to loose. It reaches a large
+ *   smooth stretch or shear, which the stages' as-rigid-as-possible energy resists. A warp that
+ *   turns a triangle over on the way is set aside;
  * - then stages of rounds: each template vertex is matched to the foot of its perpendicular on
  *   the target's tangent plane at its closest point (point-to-plane); matches unlikely to be the
  *   same place are set aside (far: beyond MaximumMatchDistance; facing away: normals more than
@@ -30,6 +34,9 @@
  *   turn and bend before their details are drawn in), RoundsPerStage rounds each; a round that
  *   keeps the trusted set changes only the right-hand side and reuses the factor. Vertices whose
  *   triangles turn over within a stage are set aside for the rest of the fit;
+ * - the stages' fit stands unless they stay farther from the target than the warp by more than
+ *   0.2% of the diagonal (root-mean-square point-to-plane): the target is then a strained image
+ *   of the template, and the warp's fit is kept (GetWarpKept);
  * - last (LandOnTarget), each trusted vertex moves onto the target where no triangle turns over.
  *
  * A target's normals need not point the same way as the template's; a cloud's are estimated
@@ -40,7 +47,7 @@
  * target, every point and cell array passed through, normals refreshed, and the point arrays
  * Displacement (output minus input), DistanceToTarget (each point's distance to the target) and
  * MatchTrusted (1 where the point's last match is trusted, 0 where it is set aside), and the
- * field arrays FitRounds, RMSDistanceToTarget and FitSeconds. Progress is reported across the
+ * field arrays FitRounds, FitWarpKept, RMSDistanceToTarget and FitSeconds. Progress is reported across the
  * rounds, and an abort ends the fit at its last round's shape. On bad input the filter reports an error,
  * passes the template through and sets GetErrorCode() to vtkErrorCode::UserError.
  * Documentation/template-fitting.md has the guide and the measurements.
@@ -123,6 +130,15 @@ public:
    */
   ///@{
   /**
+   * The rounds of the smooth warp fitted beside the stages (12; 0 for none): each matches the
+   * template to the target and fits a smooth map of space to the matches, point-to-plane, from
+   * stiff to loose (SmoothWarp.h). A smooth map reaches a large stretch or shear of the surface,
+   * which the as-rigid-as-possible stages resist; it is kept instead of the stages' fit where
+   * the stages stay farther from the target than it by more than 0.2% of the diagonal.
+   */
+  vtkSetClampMacro(WarpRounds, int, 0, 100);
+  vtkGetMacro(WarpRounds, int);
+  /**
    * The pull of the matches, relative to the template's stiffness, at the first stage (0.001)
    * and the last (0.03), growing geometrically over NumberOfStages (6) of RoundsPerStage (4)
    * rounds each. A stiff start turns and bends whole parts before their details are drawn in.
@@ -186,10 +202,12 @@ public:
    * @name Results of the last update
    * The rounds run, the root-mean-square distance of the output's surface points to the target
    * (input units; a volume's interior is not counted), the share of them whose match is trusted
-   * at the end, and the seconds the fit took.
+   * at the end, the seconds the fit took, and whether the output is the smooth warp's fit
+   * (WarpRounds) rather than the stages'.
    */
   ///@{
   vtkGetMacro(NumberOfRounds, int);
+  vtkGetMacro(WarpKept, vtkTypeBool);
   vtkGetMacro(RMSDistanceToTarget, double);
   vtkGetMacro(TrustedFraction, double);
   vtkGetMacro(FitTime, double);
@@ -216,10 +234,18 @@ private:
   // The stages' rounds on `shape` (the template in the fit's frame, updated in place); false if
   // a solve failed (reported) or the filter was aborted.
   bool Fit(vtkPolyData* rest, vtkPolyData* shape);
+  // The smooth warp's rounds from `shape` (the landmarks' fit, or the posed template), which
+  // takes the points of `rest` warped; `stands` is false where the warp folded or found too few
+  // matches. False if the filter was aborted. Each round is `share` of the progress.
+  bool Warp(vtkPolyData* rest, vtkPolyData* shape, double share, bool& stands);
+  // The root-mean-square point-to-plane distance of `shape`'s trusted matches.
+  double PlaneMisfit(vtkPolyData* shape);
   // The output (the fitted shape, or the grid that followed it) posed, with its arrays.
   void WriteOutput(vtkPointSet* rest, vtkPolyData* shape, vtkPointSet* output);
 
   int PoseMode = POSE_SIMILARITY;
+  int WarpRounds = 12;
+  vtkTypeBool WarpKept = 0;
   double InitialMatchWeight = 0.001;
   double FinalMatchWeight = 0.03;
   int NumberOfStages = 6;

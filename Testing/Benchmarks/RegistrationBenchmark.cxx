@@ -8,7 +8,7 @@
 //     [--fit Setting=value,...]
 //
 // --fit sets the fit's settings for a measurement of them (RotationMode, OperatorOrder,
-// BendingWeight, RotationSmoothing, InitialMatchWeight, FinalMatchWeight, NumberOfStages,
+// BendingWeight, RotationSmoothing, InitialMatchWeight, FinalMatchWeight, NumberOfStages, WarpRounds,
 // RoundsPerStage, ARAPIterations, LandOnTarget); the defaults otherwise.
 //
 // --subdivide L fits a template Loop-subdivided L times (4^L times the vertices; the
@@ -75,6 +75,7 @@ const std::map<std::string, Setter>& FitSetters()
     { "InitialMatchWeight", [](R* r, double v) { r->SetInitialMatchWeight(v); } },
     { "FinalMatchWeight", [](R* r, double v) { r->SetFinalMatchWeight(v); } },
     { "NumberOfStages", [](R* r, double v) { r->SetNumberOfStages(static_cast<int>(v)); } },
+    { "WarpRounds", [](R* r, double v) { r->SetWarpRounds(static_cast<int>(v)); } },
     { "RoundsPerStage", [](R* r, double v) { r->SetRoundsPerStage(static_cast<int>(v)); } },
     { "ARAPIterations", [](R* r, double v) { r->SetARAPIterations(static_cast<int>(v)); } },
     { "LandOnTarget", [](R* r, double v) { r->SetLandOnTarget(v != 0.0); } },

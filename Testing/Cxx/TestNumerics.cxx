@@ -8,6 +8,7 @@
 #include "GeodesicDistance.h"
 #include "ImplicitSimilaritySystem.h"
 #include "LaplacianOperator.h"
+#include "SmoothWarp.h"
 #include "SurfaceMesh.h"
 #include "ThinPlateSpline.h"
 
@@ -776,4 +777,84 @@ TEST(ThinPlateSpline, RefusesLandmarksThatFixNoSpline)
   EXPECT_TRUE(spline.IsEmpty());
   EXPECT_FALSE(spline.Fit(BoxLandmarks(ThinPlateSpline::MaximumLandmarks + 1, 9))) << "too many";
   EXPECT_TRUE(spline.Fit(BoxLandmarks(4, 10)));
+}
+
+TEST(SmoothWarp, ReproducesAnAffineMapAtAnySmoothness)
+{
+  // An affine map bends nothing: fitted to its own matches, point to point, it is the warp
+  // everywhere, however smooth the fit is asked to be.
+  const Positions points = BoxLandmarks(400, 11);
+  SmoothWarp warp;
+  warp.SetCentres(points.topRows(50));
+  Eigen::Matrix3d linear;
+  linear << 1.1, -0.1, 0.05, 0.2, 0.9, 0.0, -0.1, 0.1, 1.2;
+  auto affine = [&](const Positions& p) {
+    Positions moved = p * linear.transpose();
+    moved.rowwise() += Eigen::RowVector3d(0.3, -0.2, 0.1);
+    return moved;
+  };
+  const Positions normals = Positions::Zero(points.rows(), 3);
+  for (const double smoothness : { 1e-6, 1.0, 1e3 })
+  {
+    ASSERT_TRUE(warp.Fit(points, affine(points), normals, Eigen::VectorXd::Ones(points.rows()),
+      smoothness, 1.0));
+    const Positions elsewhere = 1.5 * BoxLandmarks(300, 12);
+    EXPECT_LE((elsewhere + warp.Displace(elsewhere) - affine(elsewhere)).cwiseAbs().maxCoeff(), 1e-8)
+      << "smoothness " << smoothness;
+  }
+}
+
+TEST(SmoothWarp, PointToPlaneMatchesAreMetAlongTheirNormals)
+{
+  // Points on the plane z = 0, matched to the plane 0.1 above at places scattered along it by
+  // up to 0.05 (as closest points of another mesh are): the warp meets the plane, and the
+  // scatter, which a point-to-plane match does not hold, hardly moves the points along it.
+  Positions points = BoxLandmarks(300, 13);
+  points.col(2).setZero();
+  points.row(0) << 0.0, 0.0, 0.5; // a point off the plane, so that the centres span a volume
+  Positions matches = points + 0.05 * BoxLandmarks(300, 15);
+  matches.col(2) = points.col(2).array() + 0.1;
+  Positions normals = Positions::Zero(points.rows(), 3);
+  normals.col(2).setOnes();
+  SmoothWarp warp;
+  warp.SetCentres(points.topRows(40));
+  ASSERT_TRUE(warp.Fit(points, matches, normals, Eigen::VectorXd::Ones(points.rows()), 1e-3, 0.01));
+  const Positions moved = warp.Displace(points);
+  EXPECT_LE((moved.col(2).array() - 0.1).abs().maxCoeff(), 1e-3);
+  const double scatter = std::sqrt((matches - points).leftCols(2).squaredNorm() / points.rows());
+  const double slide = std::sqrt(moved.leftCols(2).squaredNorm() / points.rows());
+  EXPECT_LE(slide, 0.2 * scatter);
+  // Without weights there is nothing to fit.
+  EXPECT_FALSE(warp.Fit(points, matches, normals, Eigen::VectorXd::Zero(points.rows()), 1e-3, 0.01));
+}
+
+TEST(SmoothWarp, FarthestPointsSpreadOverThePoints)
+{
+  const Positions points = BoxLandmarks(500, 14);
+  const std::vector<int> chosen = SmoothWarp::FarthestPoints(points, 30);
+  ASSERT_EQ(chosen.size(), 30u);
+  EXPECT_EQ(chosen[0], 0);
+  std::vector<int> sorted = chosen;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::unique(sorted.begin(), sorted.end()), sorted.end()) << "no point twice";
+  // Every point lies nearer a chosen one than the chosen ones lie to each other (at most twice).
+  double closestPair = std::numeric_limits<double>::infinity(), farthest = 0.0;
+  for (std::size_t a = 0; a < chosen.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < chosen.size(); ++b)
+    {
+      closestPair = std::min(closestPair, (points.row(chosen[a]) - points.row(chosen[b])).norm());
+    }
+  }
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const int c : chosen)
+    {
+      nearest = std::min(nearest, (points.row(i) - points.row(c)).norm());
+    }
+    farthest = std::max(farthest, nearest);
+  }
+  EXPECT_LE(farthest, closestPair + 1e-12);
+  EXPECT_EQ(SmoothWarp::FarthestPoints(points.topRows(10), 30).size(), 10u) << "all, where few";
 }

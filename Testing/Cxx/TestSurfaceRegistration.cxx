@@ -77,6 +77,19 @@ vtkSmartPointer<vtkPolyData> WithIds(vtkPolyData* mesh)
   labeled->ShallowCopy(ids->GetOutput());
   return labeled;
 }
+
+// The landmark warp's fit of a case, from its landmarks alone: the yardstick of a fit.
+RegistrationCases::Measures LandmarkWarpMeasures(
+  const KnownWarps::Warp& warp, const RegistrationCases::Case& fit)
+{
+  vtkNew<vtkLaplacianLandmarkWarp> landmarkWarp;
+  landmarkWarp->SetInputData(warp.Mesh);
+  landmarkWarp->SetSourceLandmarks(fit.Sources);
+  landmarkWarp->SetTargetLandmarks(fit.Targets);
+  landmarkWarp->Update();
+  return RegistrationCases::Measure(
+    vtkPolyData::SafeDownCast(landmarkWarp->GetOutput()), fit, warp.Mesh->GetLength());
+}
 }
 
 TEST(SurfaceRegistration, TemplateOnItselfStaysPut)
@@ -118,13 +131,7 @@ TEST_P(KnownWarpFit, LandsInCorrespondence)
   ASSERT_TRUE(warp.Mesh);
   const RegistrationCases::Case fit = RegistrationCases::MakeCase(name, warp, 8, 3);
   const double diagonal = warp.Mesh->GetLength();
-  vtkNew<vtkLaplacianLandmarkWarp> landmarkWarp;
-  landmarkWarp->SetInputData(warp.Mesh);
-  landmarkWarp->SetSourceLandmarks(fit.Sources);
-  landmarkWarp->SetTargetLandmarks(fit.Targets);
-  landmarkWarp->Update();
-  const RegistrationCases::Measures landmarksOnly = RegistrationCases::Measure(
-    vtkPolyData::SafeDownCast(landmarkWarp->GetOutput()), fit, diagonal);
+  const RegistrationCases::Measures landmarksOnly = LandmarkWarpMeasures(warp, fit);
   auto registration = Registration(warp.Mesh, fit.Target, Landmarks(fit.Sources, fit.Targets));
   ErrorCatcher errors(registration);
   registration->Update();
@@ -134,10 +141,42 @@ TEST_P(KnownWarpFit, LandsInCorrespondence)
   EXPECT_LT(fitted.Correspondence, 0.5 * landmarksOnly.Correspondence) << name;
   EXPECT_LT(fitted.ToTarget, name == "cloud" ? 1.5 : 0.6) << name;
   EXPECT_EQ(fitted.TurnedOver, 0) << name;
+  EXPECT_FALSE(registration->GetWarpKept()) << name << ": a bend is the stages' (isometric)";
 }
 
 INSTANTIATE_TEST_SUITE_P(
   Bend, KnownWarpFit, ::testing::Values("remeshed", "noisy", "hole", "cloud", "posed"));
+
+// The turned head's target is a smooth shear of the template (up to 83% across the body), which
+// the stages' rigid prior resists (0.49 times the landmark warp's error, RegistrationBenchmark)
+// and the smooth warp reaches (0.19-0.21 times there): the warp's fit is kept, within the
+// issue's 0.35 times, with no triangle turned over; without the warp the stages' fit is the
+// output, farther from the truth.
+TEST(SurfaceRegistration, SmoothWarpReachesAStrainedTarget)
+{
+  KnownWarps::Warp warp = KnownWarps::TurnedHead(DataDir);
+  ASSERT_TRUE(warp.Mesh);
+  const RegistrationCases::Case fit = RegistrationCases::MakeCase("remeshed", warp, 8, 3);
+  const double diagonal = warp.Mesh->GetLength();
+  const double landmarksOnly = LandmarkWarpMeasures(warp, fit).Correspondence;
+  double errors[2];
+  for (const int rounds : { 12, 0 })
+  {
+    auto registration = Registration(warp.Mesh, fit.Target, Landmarks(fit.Sources, fit.Targets));
+    registration->SetWarpRounds(rounds);
+    registration->Update();
+    const RegistrationCases::Measures fitted = RegistrationCases::Measure(
+      vtkPolyData::SafeDownCast(registration->GetOutput()), fit, diagonal);
+    EXPECT_EQ(registration->GetWarpKept(), rounds > 0) << rounds << " rounds";
+    if (rounds > 0)
+    {
+      EXPECT_EQ(fitted.TurnedOver, 0); // the stages alone turn two over at the muzzle
+    }
+    errors[rounds > 0 ? 0 : 1] = fitted.Correspondence;
+  }
+  EXPECT_LT(errors[0], 0.35 * landmarksOnly);
+  EXPECT_LT(errors[0], 0.6 * errors[1]) << "the stages alone";
+}
 
 TEST(SurfaceRegistration, VolumeTemplateFollowsWithoutInvertingACell)
 {
@@ -255,7 +294,7 @@ TEST(SurfaceRegistration, OutputCarriesItsArrays)
   ASSERT_TRUE(field->GetArray("FitRounds") && field->GetArray("RMSDistanceToTarget") &&
     field->GetArray("FitSeconds"));
   EXPECT_EQ(field->GetArray("FitRounds")->GetTuple1(0),
-    registration->GetNumberOfStages() * registration->GetRoundsPerStage());
+    registration->GetWarpRounds() + registration->GetNumberOfStages() * registration->GetRoundsPerStage());
   EXPECT_LT(registration->GetRMSDistanceToTarget(), 1e-3 * Diagonal(plane));
 }
 

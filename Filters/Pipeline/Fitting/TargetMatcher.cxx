@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <thread>
 #include <unordered_map>
 
@@ -362,18 +363,29 @@ void TargetMatcher::OrientCloud(vtkPolyData* shape)
   this->CloudOriented = true;
 }
 
-void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches) const
+void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches,
+  const std::vector<vtkIdType>* subset) const
 {
   vtkSmartPointer<vtkPolyData> normalized = WithPointNormals(shape);
   vtkDataArray* own = normalized->GetPointData()->GetNormals();
   const vtkIdType n = shape->GetNumberOfPoints();
   matches.Targets.resize(n);
+  matches.Normals.resize(n);
   matches.Landings.resize(n);
   matches.Distances.resize(n);
-  matches.Trusted.assign(n, 1);
-  std::vector<double> cosines(n, 1.0);
-  std::vector<char> rims(n, 0);
-  auto matchPoint = [&](vtkIdType i, std::size_t locator) {
+  matches.Trusted.assign(n, subset ? 0 : 1);
+  std::vector<vtkIdType> all;
+  if (!subset)
+  {
+    all.resize(n);
+    std::iota(all.begin(), all.end(), vtkIdType(0));
+  }
+  const std::vector<vtkIdType>& ids = subset ? *subset : all;
+  const vtkIdType count = static_cast<vtkIdType>(ids.size());
+  std::vector<double> cosines(count, 1.0);
+  std::vector<char> rims(count, 0);
+  auto matchPoint = [&](vtkIdType row, std::size_t locator) {
+    const vtkIdType i = ids[row];
     double p[3], closest[3], normal[3], mine[3];
     shape->GetPoint(i, p);
     bool rim = false;
@@ -384,11 +396,12 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
     for (int k = 0; k < 3; ++k)
     {
       matches.Targets[i][k] = p[k] + along * normal[k];
+      matches.Normals[i][k] = normal[k];
       matches.Landings[i][k] = this->Surface ? closest[k] : matches.Targets[i][k];
     }
     matches.Distances[i] = std::sqrt(vtkMath::Distance2BetweenPoints(p, closest));
-    cosines[i] = vtkMath::Dot(normal, mine);
-    rims[i] = rim;
+    cosines[row] = vtkMath::Dot(normal, mine);
+    rims[row] = rim;
   };
   // The closest points are most of a fit's time: a part per thread, each with its own cell
   // locator (a cloud's point locator keeps no query state).
@@ -396,22 +409,23 @@ void TargetMatcher::Match(vtkPolyData* shape, const Criteria& criteria, Matches&
   SMPFor(0, parts, [&](int firstPart, int lastPart) {
     for (int part = firstPart; part < lastPart; ++part)
     {
-      for (vtkIdType i = n * part / parts; i < n * (part + 1) / parts; ++i)
+      for (vtkIdType k = count * part / parts; k < count * (part + 1) / parts; ++k)
       {
-        matchPoint(i, this->Surface ? part : 0);
+        matchPoint(k, this->Surface ? part : 0);
       }
     }
   });
   const auto facing = std::count_if(cosines.begin(), cosines.end(), [](double c) { return c >= 0.0; });
-  const auto opposed = static_cast<decltype(facing)>(n) - facing;
+  const auto opposed = static_cast<decltype(facing)>(count) - facing;
   // A surface's normals may point the other way than the template's all over (another
   // orientation); a cloud's sign is unknown point by point.
   const double sign = opposed > facing ? -1.0 : 1.0;
-  for (vtkIdType i = 0; i < n; ++i)
+  for (vtkIdType k = 0; k < count; ++k)
   {
-    const double cosine = this->Surface ? sign * cosines[i]
-                                        : (this->CloudOriented ? cosines[i] : std::abs(cosines[i]));
-    matches.Trusted[i] = matches.Distances[i] <= criteria.MaximumDistance && cosine >= criteria.MinimumCosine && !rims[i];
+    const vtkIdType i = ids[k];
+    const double cosine = this->Surface ? sign * cosines[k]
+                                        : (this->CloudOriented ? cosines[k] : std::abs(cosines[k]));
+    matches.Trusted[i] = matches.Distances[i] <= criteria.MaximumDistance && cosine >= criteria.MinimumCosine && !rims[k];
   }
 }
 }

@@ -49,12 +49,13 @@ public:
     double MinimumCosine = 0.5;
   };
 
-  /// Each template point's match (the foot on the tangent plane), where it lands on the target
-  /// (a surface's closest point; on a cloud, the foot, between its points), the distance to the
-  /// closest point and whether the match is trusted.
+  /// Each template point's match (the foot on the tangent plane) and the target's normal there,
+  /// where it lands on the target (a surface's closest point; on a cloud, the foot, between its
+  /// points), the distance to the closest point and whether the match is trusted.
   struct Matches
   {
     std::vector<std::array<double, 3>> Targets;
+    std::vector<std::array<double, 3>> Normals;
     std::vector<std::array<double, 3>> Landings;
     std::vector<double> Distances;
     std::vector<char> Trusted;
@@ -71,8 +72,10 @@ public:
   /// cloud's normals count with their sign. Nothing for a surface.
   void OrientCloud(vtkPolyData* shape);
 
-  /// The matches of `shape`'s points (a surface whose point normals are computed here).
-  void Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches) const;
+  /// The matches of `shape`'s points (a surface whose point normals are computed here), or of
+  /// the points `subset` lists alone (the others are left untrusted).
+  void Match(vtkPolyData* shape, const Criteria& criteria, Matches& matches,
+    const std::vector<vtkIdType>* subset = nullptr) const;
 
   /// The distance from `point` to the target (its triangles, or its nearest point).
   double DistanceTo(const double point[3]) const;
