@@ -553,14 +553,7 @@ bool vtkLaplacianSurfaceRegistration::Warp(
   {
     surfacePoints.row(k) = all.row(surfaceRows[k]);
   }
-  le::SmoothWarp warp;
-  std::vector<int> centres = le::SmoothWarp::FarthestPoints(surfacePoints, WarpCentres);
-  le::Positions centrePoints(centres.size(), 3);
-  for (std::size_t k = 0; k < centres.size(); ++k)
-  {
-    centrePoints.row(k) = surfacePoints.row(centres[k]);
-  }
-  warp.SetCentres(centrePoints);
+  // The samples spread over the surface; their first WarpCentres are the warp's centres.
   std::vector<vtkIdType> samples;
   for (const int sample : le::SmoothWarp::FarthestPoints(surfacePoints, WarpSamples))
   {
@@ -572,6 +565,10 @@ bool vtkLaplacianSurfaceRegistration::Warp(
   const int rows = static_cast<int>(samples.size()) + pairs;
   le::Positions points(rows, 3), matches(rows, 3), normals(rows, 3);
   Eigen::VectorXd weights(rows);
+  for (std::size_t k = 0; k < samples.size(); ++k)
+  {
+    points.row(k) = all.row(samples[k]);
+  }
   for (int k = 0; k < pairs; ++k)
   {
     double p[3], q[3];
@@ -583,10 +580,8 @@ bool vtkLaplacianSurfaceRegistration::Warp(
     normals.row(row).setZero();
     weights(row) = WarpLandmarkWeight / WarpPointShare;
   }
-  for (std::size_t k = 0; k < samples.size(); ++k)
-  {
-    points.row(k) = all.row(samples[k]);
-  }
+  const int centres = std::min<int>(WarpCentres, static_cast<int>(samples.size()));
+  le::SmoothWarp warp(points.topRows(centres), points);
   lep::TargetMatcher::Matches& found = internals.Matches;
   // A warp that turns a triangle over on its way to the loosest is set aside whole: the target
   // is not a smooth map of the template (parts turned about narrow joints, which a smooth map
@@ -614,7 +609,7 @@ bool vtkLaplacianSurfaceRegistration::Warp(
     const double progress = this->WarpRounds > 1 ? round / (this->WarpRounds - 1.0) : 1.0;
     const double smoothness =
       WarpFirstSmoothness * std::pow(WarpLastSmoothness / WarpFirstSmoothness, progress);
-    if (!warp.Fit(points, matches, normals, weights, smoothness, WarpPointShare))
+    if (!warp.Fit(matches, normals, weights, smoothness, WarpPointShare))
     {
       return true; // too few trusted matches to fit: no warp
     }

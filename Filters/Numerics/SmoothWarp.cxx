@@ -26,13 +26,21 @@ std::vector<int> SmoothWarp::FarthestPoints(const Positions& points, int count)
   return chosen;
 }
 
-void SmoothWarp::SetCentres(const Positions& centres)
+SmoothWarp::SmoothWarp(const Positions& centres, const Positions& points)
+  : Points(points)
 {
   this->Origin = centres.colwise().mean().transpose();
   const double extent = (centres.colwise().maxCoeff() - centres.colwise().minCoeff()).norm();
   this->Scale = extent > 0.0 ? 1.0 / extent : 1.0;
   this->Centres = (centres.rowwise() - this->Origin.transpose()) * this->Scale;
   this->Coefficients = Eigen::MatrixXd::Zero(centres.rows() + 4, 3);
+  this->Values = this->Basis(points);
+  const Eigen::Index k = this->Centres.rows();
+  this->Bending.resize(k, k);
+  for (Eigen::Index c = 0; c < k; ++c)
+  {
+    this->Bending.col(c) = (this->Centres.rowwise() - this->Centres.row(c)).rowwise().norm();
+  }
 }
 
 Eigen::MatrixXd SmoothWarp::Basis(const Positions& points) const
@@ -49,17 +57,17 @@ Eigen::MatrixXd SmoothWarp::Basis(const Positions& points) const
   return basis;
 }
 
-bool SmoothWarp::Fit(const Positions& points, const Positions& matches, const Positions& normals,
+bool SmoothWarp::Fit(const Positions& matches, const Positions& normals,
   const Eigen::VectorXd& weights, double smoothness, double pointShare)
 {
-  const Eigen::Index k = this->Centres.rows(), m = k + 4, n = points.rows();
+  const Eigen::Index k = this->Centres.rows(), m = k + 4, n = this->Points.rows();
   if ((weights.array() > 0.0).count() < 4)
   {
     return false;
   }
-  const Eigen::MatrixXd basis = this->Basis(points);
+  const Eigen::MatrixXd& basis = this->Values;
   // The residuals in the frame: x + d(x) - m, the displacement's frame scale included.
-  const Positions gap = (matches - points) * this->Scale;
+  const Positions gap = (matches - this->Points) * this->Scale;
   // Normal equations of the three axes' coefficients together: the point-to-plane term couples
   // them through n n^T, the point-to-point share adds to each axis alone.
   Eigen::MatrixXd system = Eigen::MatrixXd::Zero(3 * m + 12, 3 * m + 12);
@@ -81,16 +89,12 @@ bool SmoothWarp::Fit(const Positions& points, const Positions& matches, const Po
       (weights.cwiseProduct(normals.col(a).cwiseProduct(along) + pointShare * gap.col(a)));
   }
   // The bending energy on each axis, and the side conditions P^T a = 0 that make it one.
-  Eigen::MatrixXd kernel(k, k), sides(k, 4);
-  for (Eigen::Index c = 0; c < k; ++c)
-  {
-    kernel.col(c) = (this->Centres.rowwise() - this->Centres.row(c)).rowwise().norm();
-  }
+  Eigen::MatrixXd sides(k, 4);
   sides.col(0).setOnes();
   sides.rightCols(3) = this->Centres;
   for (int a = 0; a < 3; ++a)
   {
-    system.block(a * m, a * m, k, k) -= smoothness * static_cast<double>(n) * kernel;
+    system.block(a * m, a * m, k, k) -= smoothness * static_cast<double>(n) * this->Bending;
     system.block(3 * m + 4 * a, a * m, 4, k) = sides.transpose();
     system.block(a * m, 3 * m + 4 * a, k, 4) = sides;
   }

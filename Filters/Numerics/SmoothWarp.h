@@ -27,18 +27,20 @@ class SmoothWarp
 {
 public:
   /// `count` rows of `points` spread over them: each the farthest from those chosen before,
-  /// starting at row 0 (all rows where there are no more than `count`).
+  /// starting at row 0 (all rows where there are no more than `count`). The first k of them are
+  /// the k a smaller count chooses.
   static std::vector<int> FarthestPoints(const Positions& points, int count);
 
-  /// The warp's kernel centres (a row each, at least 4 spanning a volume); the warp is the
-  /// identity until a fit.
-  void SetCentres(const Positions& centres);
+  /// The warp's kernel centres (a row each, at least 4 spanning a volume) and the points it is
+  /// fitted at (a row each): their kernel values are computed once, for every fit. The warp is
+  /// the identity until a fit.
+  SmoothWarp(const Positions& centres, const Positions& points);
 
-  /// Fits the warp to the matches (a row each of `matches` and `normals` per row of `points`;
-  /// a weight of 0 ignores a point). Returns false, the warp unchanged, where fewer than four
+  /// Fits the warp to the matches of the points (a row each of `matches` and `normals`; a
+  /// weight of 0 ignores a point). Returns false, the warp unchanged, where fewer than four
   /// points have a weight or the system is singular.
-  bool Fit(const Positions& points, const Positions& matches, const Positions& normals,
-    const Eigen::VectorXd& weights, double smoothness, double pointShare);
+  bool Fit(const Positions& matches, const Positions& normals, const Eigen::VectorXd& weights,
+    double smoothness, double pointShare);
 
   /// The displacements at `points`, rows in parallel through `loop`.
   Positions Displace(const Positions& points, const ParallelFor& loop = SerialFor) const;
@@ -50,6 +52,9 @@ private:
   Positions Centres; // in the frame
   Vector3 Origin = Vector3::Zero();
   double Scale = 1.0;
+  Positions Points;       // the fitted points
+  Eigen::MatrixXd Values; // their basis rows
+  Eigen::MatrixXd Bending; // the centres' kernel, K_cd = |c - d|
   Eigen::MatrixXd Coefficients; // kernel weights, then the affine part; a column per axis
 };
 }

@@ -784,8 +784,7 @@ TEST(SmoothWarp, ReproducesAnAffineMapAtAnySmoothness)
   // An affine map bends nothing: fitted to its own matches, point to point, it is the warp
   // everywhere, however smooth the fit is asked to be.
   const Positions points = BoxLandmarks(400, 11);
-  SmoothWarp warp;
-  warp.SetCentres(points.topRows(50));
+  SmoothWarp warp(points.topRows(50), points);
   Eigen::Matrix3d linear;
   linear << 1.1, -0.1, 0.05, 0.2, 0.9, 0.0, -0.1, 0.1, 1.2;
   auto affine = [&](const Positions& p) {
@@ -796,8 +795,8 @@ TEST(SmoothWarp, ReproducesAnAffineMapAtAnySmoothness)
   const Positions normals = Positions::Zero(points.rows(), 3);
   for (const double smoothness : { 1e-6, 1.0, 1e3 })
   {
-    ASSERT_TRUE(warp.Fit(points, affine(points), normals, Eigen::VectorXd::Ones(points.rows()),
-      smoothness, 1.0));
+    ASSERT_TRUE(
+      warp.Fit(affine(points), normals, Eigen::VectorXd::Ones(points.rows()), smoothness, 1.0));
     const Positions elsewhere = 1.5 * BoxLandmarks(300, 12);
     EXPECT_LE((elsewhere + warp.Displace(elsewhere) - affine(elsewhere)).cwiseAbs().maxCoeff(), 1e-8)
       << "smoothness " << smoothness;
@@ -816,16 +815,15 @@ TEST(SmoothWarp, PointToPlaneMatchesAreMetAlongTheirNormals)
   matches.col(2) = points.col(2).array() + 0.1;
   Positions normals = Positions::Zero(points.rows(), 3);
   normals.col(2).setOnes();
-  SmoothWarp warp;
-  warp.SetCentres(points.topRows(40));
-  ASSERT_TRUE(warp.Fit(points, matches, normals, Eigen::VectorXd::Ones(points.rows()), 1e-3, 0.01));
+  SmoothWarp warp(points.topRows(40), points);
+  ASSERT_TRUE(warp.Fit(matches, normals, Eigen::VectorXd::Ones(points.rows()), 1e-3, 0.01));
   const Positions moved = warp.Displace(points);
   EXPECT_LE((moved.col(2).array() - 0.1).abs().maxCoeff(), 1e-3);
   const double scatter = std::sqrt((matches - points).leftCols(2).squaredNorm() / points.rows());
   const double slide = std::sqrt(moved.leftCols(2).squaredNorm() / points.rows());
   EXPECT_LE(slide, 0.2 * scatter);
   // Without weights there is nothing to fit.
-  EXPECT_FALSE(warp.Fit(points, matches, normals, Eigen::VectorXd::Zero(points.rows()), 1e-3, 0.01));
+  EXPECT_FALSE(warp.Fit(matches, normals, Eigen::VectorXd::Zero(points.rows()), 1e-3, 0.01));
 }
 
 TEST(SmoothWarp, FarthestPointsSpreadOverThePoints)
@@ -857,4 +855,6 @@ TEST(SmoothWarp, FarthestPointsSpreadOverThePoints)
   }
   EXPECT_LE(farthest, closestPair + 1e-12);
   EXPECT_EQ(SmoothWarp::FarthestPoints(points.topRows(10), 30).size(), 10u) << "all, where few";
+  const std::vector<int> fewer = SmoothWarp::FarthestPoints(points, 12);
+  EXPECT_TRUE(std::equal(fewer.begin(), fewer.end(), chosen.begin())) << "a prefix of more";
 }
