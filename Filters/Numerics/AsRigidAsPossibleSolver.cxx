@@ -900,8 +900,8 @@ double AsRigidAsPossibleSolver::PullEnergy(const Positions& roiPositions,
   double energy = 0.0;
   if (!this->Points.IsEmpty() && points && !points->Exact)
   {
-    const double squaredMiss = (this->Points.Evaluate(roiPositions) - points->Targets).squaredNorm();
-    energy += 2.0 * this->Points.GetSquaredWeight() * squaredMiss;
+    energy += 2.0 * this->Points.GetSquaredWeight() *
+      this->Points.PulledSquaredMiss(roiPositions, points->Targets);
   }
   if (this->PriorWeight > 0.0)
   {

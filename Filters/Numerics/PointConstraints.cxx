@@ -9,6 +9,7 @@ std::string PointConstraints::Build(
 {
   this->Rows.resize(points.size());
   this->Weights.resize(points.size());
+  this->Pulls.resize(points.size());
   for (std::size_t p = 0; p < points.size(); ++p)
   {
     for (int c = 0; c < 3; ++c)
@@ -23,6 +24,7 @@ std::string PointConstraints::Build(
       this->Rows[p][c] = std::max(row, 0);
       this->Weights[p][c] = points[p].Weights[c];
     }
+    this->Pulls[p] = points[p].Pull;
   }
   return {};
 }
@@ -54,7 +56,7 @@ std::string PointConstraints::AddToMatrix(
     {
       for (int b = 0; b < 3; ++b)
       {
-        const double value = this->SquaredWeight * this->Weights[p][a] * this->Weights[p][b];
+        const double value = this->SquaredWeight * this->Pulls[p] * this->Weights[p][a] * this->Weights[p][b];
         if (value == 0.0)
         {
           continue;
@@ -83,10 +85,16 @@ Positions PointConstraints::RightHandSide(const Positions& targets, int rows) co
   {
     for (int c = 0; c < 3; ++c)
     {
-      rhs.row(this->Rows[p][c]) += (this->SquaredWeight * this->Weights[p][c]) * targets.row(p);
+      rhs.row(this->Rows[p][c]) += (this->SquaredWeight * this->Pulls[p] * this->Weights[p][c]) * targets.row(p);
     }
   }
   return rhs;
+}
+
+double PointConstraints::PulledSquaredMiss(const Positions& region, const Positions& targets) const
+{
+  const Eigen::VectorXd misses = (this->Evaluate(region) - targets).rowwise().squaredNorm();
+  return misses.dot(Eigen::Map<const Eigen::VectorXd>(this->Pulls.data(), this->GetNumberOfPoints()));
 }
 
 double PointConstraints::LargestMiss(const Positions& region, const Positions& targets) const

@@ -28,6 +28,9 @@ struct SurfacePoint
 {
   std::array<int, 3> Vertices = { { 0, 0, 0 } };
   std::array<double, 3> Weights = { { 1.0, 0.0, 0.0 } };
+  /// Its pull's square relative to the other points' (a soft fit's trust in it; an exact fit
+  /// meets every point whatever its pull).
+  double Pull = 1.0;
 };
 
 /// Targets for a region's point constraints, and how closely to meet them.
@@ -70,6 +73,9 @@ public:
   /// w^2 B^T t, a row per region row (`rows` of them).
   Positions RightHandSide(const Positions& targets, int rows) const;
 
+  /// The sum of the points' squared distances from their targets, each times its pull.
+  double PulledSquaredMiss(const Positions& region, const Positions& targets) const;
+
   /// The largest distance of a point from its target.
   double LargestMiss(const Positions& region, const Positions& targets) const;
 
@@ -83,6 +89,7 @@ public:
 private:
   std::vector<std::array<int, 3>> Rows;
   std::vector<std::array<double, 3>> Weights;
+  std::vector<double> Pulls;
   double SquaredWeight = 0.0;
 };
 }

@@ -50,7 +50,12 @@ struct Warp
   LaplacianEditor Editor;
 
   Warp(RotationMode mode, int count, double weight = 100.0, double splinePrior = 0.0)
-    : Points(std::make_shared<std::vector<SurfacePoint>>(RandomPoints(*Mesh, count)))
+    : Warp(mode, RandomPoints(MakeTube(16, 24), count), weight, splinePrior)
+  {
+  }
+
+  Warp(RotationMode mode, std::vector<SurfacePoint> points, double weight, double splinePrior = 0.0)
+    : Points(std::make_shared<std::vector<SurfacePoint>>(std::move(points)))
   {
     this->Editor.SetMesh(this->Mesh);
     RegionRequest region;
@@ -202,6 +207,36 @@ TEST(PointConstraints, ASofterPullMissesMore)
   std::printf("soft fit: largest miss %.3g at weight 0.3, %.3g at 30\n", misses[0], misses[1]);
   EXPECT_GT(misses[0], 10.0 * misses[1]);
   EXPECT_GT(misses[1], 0.0);
+}
+
+// A point's pull counts as that many points: pulls 1 and 3 on one place, its targets d and -d
+// apart, are one point of pull 4 at their weighted mean (the same energy but for a constant).
+TEST(PointConstraints, APullCountsAsThatManyPoints)
+{
+  const std::vector<SurfacePoint> points = RandomPoints(MakeTube(16, 24), 40);
+  const Vector3 d(0.05, 0.02, 0.0);
+  for (const RotationMode mode : Modes)
+  {
+    SCOPED_TRACE(static_cast<int>(mode));
+    std::vector<SurfacePoint> pair = points, single = points;
+    pair.push_back(points.front());
+    pair.back().Pull = 3.0;
+    single.front().Pull = 4.0;
+    Warp paired(mode, pair, 1.0), merged(mode, single, 1.0);
+    Positions pairTargets = paired.RestTargets(), singleTargets = merged.RestTargets();
+    pairTargets.row(0) += d.transpose();
+    pairTargets.row(40) -= d.transpose();
+    singleTargets.row(0) -= 0.5 * d.transpose();
+    const Positions a = paired.Solve(pairTargets, false), b = merged.Solve(singleTargets, false);
+    const double moved = (a - paired.Rest()).rowwise().norm().maxCoeff();
+    const double apart = (a - b).rowwise().norm().maxCoeff();
+    std::printf("pulls 1 and 3 against one of 4: largest difference %.3g (the point moved %.3g)\n",
+      apart, moved);
+    EXPECT_GT(moved, 0.1 * d.norm());
+    // The linear modes solve once, to round-off; ARAP's local-global iterations stop at their
+    // tolerance (1e-9) from two starts.
+    EXPECT_LE(apart, (mode == RotationMode::AsRigidAsPossible ? 1e-4 : 1e-12) * moved);
+  }
 }
 
 TEST(PointConstraints, NewTargetsOnlySolve)
