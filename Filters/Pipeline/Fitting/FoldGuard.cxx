@@ -5,7 +5,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolygon.h"
 
 #include <algorithm>
 
@@ -16,10 +15,14 @@ namespace Pipeline
 namespace
 {
 // Landing may tilt a triangle by at most 30 degrees (the cosine): more, on a noisy target, and a
-// small triangle is a step away from turning over.
+// small triangle is a step away from turning over. Nor may it shrink one to less than a quarter
+// of its area: a sliver's normal is a rounding error away from turning over (the noisy turned
+// head's one triangle turned over was landed to a 2,000th of its true area).
 constexpr double LandingTilt = 0.8660;
+constexpr double LandingShrink = 0.25;
 
-std::vector<std::array<double, 3>> PolygonNormals(vtkPolyData* shape)
+// Each polygon's normal times its area (a fan's sum): a collapsed polygon's is zero.
+std::vector<std::array<double, 3>> AreaNormals(vtkPolyData* shape)
 {
   std::vector<std::array<double, 3>> normals(shape->GetNumberOfPolys());
   vtkIdType count = 0;
@@ -28,7 +31,23 @@ std::vector<std::array<double, 3>> PolygonNormals(vtkPolyData* shape)
   for (vtkIdType c = 0; c < shape->GetNumberOfPolys(); ++c)
   {
     shape->GetCellPoints(firstPolygon + c, count, ids);
-    vtkPolygon::ComputeNormal(shape->GetPoints(), static_cast<int>(count), ids, normals[c].data());
+    std::array<double, 3>& n = normals[c];
+    n = { { 0.0, 0.0, 0.0 } };
+    double origin[3];
+    shape->GetPoint(ids[0], origin); // near the polygon, for its digits
+    for (vtkIdType k = 1; k + 1 < count; ++k)
+    {
+      double a[3], b[3], cross[3];
+      shape->GetPoint(ids[k], a);
+      shape->GetPoint(ids[k + 1], b);
+      vtkMath::Subtract(a, origin, a);
+      vtkMath::Subtract(b, origin, b);
+      vtkMath::Cross(a, b, cross);
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        n[axis] += 0.5 * cross[axis];
+      }
+    }
   }
   return normals;
 }
@@ -36,12 +55,12 @@ std::vector<std::array<double, 3>> PolygonNormals(vtkPolyData* shape)
 
 void FoldGuard::Remember(vtkPolyData* shape)
 {
-  this->Normals = PolygonNormals(shape);
+  this->Normals = AreaNormals(shape);
 }
 
 int FoldGuard::Check(vtkPolyData* shape)
 {
-  const std::vector<std::array<double, 3>> now = PolygonNormals(shape);
+  const std::vector<std::array<double, 3>> now = AreaNormals(shape);
   if (now.size() != this->Normals.size())
   {
     return 0;
@@ -69,7 +88,7 @@ int FoldGuard::Check(vtkPolyData* shape)
 int FoldGuard::Land(vtkPolyData* shape, const std::vector<std::array<double, 3>>& targets,
   const std::vector<char>& allowed) const
 {
-  const std::vector<std::array<double, 3>> before = PolygonNormals(shape);
+  const std::vector<std::array<double, 3>> before = AreaNormals(shape);
   // Held: the shape lets go of its points when it takes the landed ones.
   vtkSmartPointer<vtkPoints> kept = shape->GetPoints();
   vtkNew<vtkPoints> landed;
@@ -82,7 +101,7 @@ int FoldGuard::Land(vtkPolyData* shape, const std::vector<std::array<double, 3>>
     landed->SetPoint(i, moved[i] ? targets[i].data() : kept->GetPoint(i));
   }
   shape->SetPoints(landed);
-  // A triangle that turns over, tilts too far or collapses keeps its corners where they were; the triangles
+  // A triangle that turns over, tilts too far or shrinks too far keeps its corners where they were; the triangles
   // around them then change again, so until none does (each pass only puts points back).
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
@@ -90,12 +109,12 @@ int FoldGuard::Land(vtkPolyData* shape, const std::vector<std::array<double, 3>>
   for (bool reverted = true; reverted;)
   {
     reverted = false;
-    const std::vector<std::array<double, 3>> now = PolygonNormals(shape);
+    const std::vector<std::array<double, 3>> now = AreaNormals(shape);
     for (std::size_t c = 0; c < now.size(); ++c)
     {
       const double turn = vtkMath::Dot(now[c].data(), before[c].data());
-      if (vtkMath::Dot(before[c].data(), before[c].data()) == 0.0 ||
-        turn > LandingTilt * vtkMath::Norm(now[c].data()) * vtkMath::Norm(before[c].data()))
+      const double area = vtkMath::Norm(now[c].data()), rest = vtkMath::Norm(before[c].data());
+      if (rest == 0.0 || (turn > LandingTilt * area * rest && area >= LandingShrink * rest))
       {
         continue;
       }

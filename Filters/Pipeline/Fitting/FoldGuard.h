@@ -32,7 +32,7 @@ public:
   bool IsSetAside(vtkIdType point) const { return this->SetAside[point] != 0; }
   /// Moves each point of `shape` that `allowed` marks (and the guard has not set aside) to its
   /// target, in new points, except the corners of triangles that would turn over, tilt by more
-  /// than 30 degrees or collapse, which keep their place; returns how many points moved.
+  /// than 30 degrees or shrink to less than a quarter of their area, which keep their place; returns how many points moved.
   int Land(vtkPolyData* shape, const std::vector<std::array<double, 3>>& targets,
     const std::vector<char>& allowed) const;
   int GetNumberOfSetAside() const;
