@@ -385,6 +385,7 @@ bool vtkLaplacianSurfaceRegistration::FindPose(
   source.LandmarkSources = sources;
   source.LandmarkTargets = nullptr;
   source.MaximumBindingDistance = this->MaximumBindingDistance * internals.Diagonal;
+  source.LandmarkPull = this->LandmarkWeight;
   if (sources)
   {
     internals.FrameTargets->SetDataTypeToDouble();
@@ -726,6 +727,7 @@ void vtkLaplacianSurfaceRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WarpRounds: " << this->WarpRounds << "\n";
   os << indent << "InitialMatchWeight: " << this->InitialMatchWeight << "\n";
   os << indent << "FinalMatchWeight: " << this->FinalMatchWeight << "\n";
+  os << indent << "LandmarkWeight: " << this->LandmarkWeight << "\n";
   os << indent << "NumberOfStages: " << this->NumberOfStages << "\n";
   os << indent << "RoundsPerStage: " << this->RoundsPerStage << "\n";
   os << indent << "BendingWeight: " << this->BendingWeight << "\n";

@@ -121,8 +121,8 @@ class KnownWarpFit : public ::testing::TestWithParam<const char*>
 };
 
 // The bend's cases, each against a stated tolerance from RegistrationBenchmark's figures (the
-// fit's correspondence error is 0.33-0.45 times the landmark warp's there): at most half the
-// landmark warp's error, within 0.6% of the diagonal of the target (1.5% for the cloud, whose
+// fit's correspondence error is 0.28-0.31 times the landmark warp's there): within the issue's
+// 0.35 times the landmark warp's error, within 0.6% of the diagonal of the target (1.5% for the cloud, whose
 // points lie up to their spacing from its surface), and no triangle turned over.
 TEST_P(KnownWarpFit, LandsInCorrespondence)
 {
@@ -138,7 +138,7 @@ TEST_P(KnownWarpFit, LandsInCorrespondence)
   EXPECT_TRUE(errors.Messages.empty()) << errors.Messages;
   const RegistrationCases::Measures fitted =
     RegistrationCases::Measure(vtkPolyData::SafeDownCast(registration->GetOutput()), fit, diagonal);
-  EXPECT_LT(fitted.Correspondence, 0.5 * landmarksOnly.Correspondence) << name;
+  EXPECT_LT(fitted.Correspondence, 0.35 * landmarksOnly.Correspondence) << name;
   EXPECT_LT(fitted.ToTarget, name == "cloud" ? 1.5 : 0.6) << name;
   EXPECT_EQ(fitted.TurnedOver, 0) << name;
   EXPECT_FALSE(registration->GetWarpKept()) << name << ": a bend is the stages' (isometric)";
@@ -146,6 +146,33 @@ TEST_P(KnownWarpFit, LandsInCorrespondence)
 
 INSTANTIATE_TEST_SUITE_P(
   Bend, KnownWarpFit, ::testing::Values("remeshed", "noisy", "hole", "cloud", "posed"));
+
+// Matches pin the template across the target, not along it: on the bend (isometric) the fit's
+// error is the template sliding within the surface, which the landmarks' pull holds
+// (RegistrationBenchmark: 1.09% of the diagonal at LandmarkWeight 1, 0.87% at its 1000, on the
+// remeshed bend). Weighed as one matched vertex each, the landmarks leave at least 10% more.
+TEST(SurfaceRegistration, LandmarksHoldTheTemplateFromSliding)
+{
+  KnownWarps::Warp warp = KnownWarps::Bend(DataDir);
+  ASSERT_TRUE(warp.Mesh);
+  const RegistrationCases::Case fit = RegistrationCases::MakeCase("remeshed", warp, 8, 3);
+  const double diagonal = warp.Mesh->GetLength();
+  double errors[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    auto registration = Registration(warp.Mesh, fit.Target, Landmarks(fit.Sources, fit.Targets));
+    if (k == 0)
+    {
+      registration->SetLandmarkWeight(1.0); // the default second
+    }
+    registration->Update();
+    errors[k] = RegistrationCases::Measure(
+      vtkPolyData::SafeDownCast(registration->GetOutput()), fit, diagonal).Correspondence;
+  }
+  std::printf("bend, correspondence: %.3f%% at LandmarkWeight 1, %.3f%% at the default\n", errors[0],
+    errors[1]);
+  EXPECT_GT(errors[0], 1.1 * errors[1]);
+}
 
 // The turned head's target is a smooth shear of the template (up to 83% across the body), which
 // the stages' rigid prior resists (0.49 times the landmark warp's error, RegistrationBenchmark)

@@ -58,7 +58,11 @@ std::string FitSource::ChooseRegion(
     }
     if (this->LandmarkSources)
     {
-      points->insert(points->end(), this->Binder.GetPoints()->begin(), this->Binder.GetPoints()->end());
+      for (SurfacePoint landmark : *this->Binder.GetPoints())
+      {
+        landmark.Pull = this->MatchedPoints.empty() ? 1.0 : this->LandmarkPull;
+        points->push_back(landmark);
+      }
     }
     this->Points = points;
     this->BuiltFor = this->Version;

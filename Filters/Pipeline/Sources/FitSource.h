@@ -34,6 +34,8 @@ public:
   double MaximumBindingDistance = 0.0;
   /// The pull of every point, relative to the template's stiffness.
   double Weight = 1.0;
+  /// A landmark's pull among the matches, in matched vertices' (its square).
+  double LandmarkPull = 1.0;
   /// Points that no polygon uses move with their nearest fitted point (RegionChoice).
   bool FollowUnreferenced = true;
 
