@@ -33,7 +33,7 @@
  *   InitialMatchWeight to FinalMatchWeight over NumberOfStages (stiff first, so that whole parts
  *   turn and bend before their details are drawn in), RoundsPerStage rounds each; a round that
  *   keeps the trusted set changes only the right-hand side and reuses the factor. Vertices whose
- *   triangles turn over within a stage are set aside for the rest of the fit;
+ *   triangles turn over during the stages are set aside for the rest of the fit;
  * - the stages' fit stands unless they stay farther from the target than the warp by more than
  *   0.2% of the diagonal (root-mean-square point-to-plane): the target is then a strained image
  *   of the template, and the warp's fit is kept (GetWarpKept);

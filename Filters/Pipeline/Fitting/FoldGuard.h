@@ -1,7 +1,7 @@
 // FoldGuard: a template fit's watch on folds. Where the matches of neighbouring vertices
 // disagree (thin parts matched to two sides, fingers to their neighbours), a strong pull folds
 // the template: triangles turn over. The guard remembers each triangle's normal at the start of
-// a stage, and after each round sets aside for good the vertices of the triangles that turned
+// the stages, and after each round sets aside for good the vertices of the triangles that turned
 // over since (by more than a right angle, which no stage's motion does): the template's own
 // stiffness carries them from then on. It also lands a fitted shape on its matches without a
 // fold: each point moves to its match unless one of its triangles would turn over.
@@ -24,7 +24,7 @@ class FoldGuard
 public:
   /// No vertex set aside, for a shape of `points` points.
   void Reset(vtkIdType points) { this->SetAside.assign(points, 0); }
-  /// The triangles' normals of `shape` at a stage's start.
+  /// The triangles' normals of `shape` at the stages' start.
   void Remember(vtkPolyData* shape);
   /// Sets aside the corners of `shape`'s triangles turned over since Remember; returns how many
   /// vertices it set aside anew.
