@@ -245,6 +245,7 @@ int vtkLaplacianSurfaceRegistration::RequestData(
     internals.Matcher.Match(shape, internals.Criteria, matches);
     internals.Guard.Land(shape, matches.Landings, matches.Trusted);
   }
+  internals.Guard.MendSlivers(surface, shape);
   if (grid)
   {
     // The interior follows in the template's frame; the pose is applied after.

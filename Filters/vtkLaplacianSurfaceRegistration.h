@@ -37,7 +37,9 @@
  * - the stages' fit stands unless they stay farther from the target than the warp by more than
  *   0.2% of the diagonal (root-mean-square point-to-plane): the target is then a strained image
  *   of the template, and the warp's fit is kept (GetWarpKept);
- * - last (LandOnTarget), each trusted vertex moves onto the target where no triangle turns over.
+ * - last (LandOnTarget), each trusted vertex moves onto the target where no triangle turns over;
+ *   and a sliver (height under a twentieth of its longest edge) the fit turned over is turned
+ *   back, its apex where the template has it against its base.
  *
  * A target's normals need not point the same way as the template's; a cloud's are estimated
  * from each point's 12 nearest points. Without landmarks the fit relies on ICP's pose: a target

@@ -3,6 +3,7 @@
 #include "EditPipeline.h"
 #include "BumpyPlane.h"
 #include "FilterTestHelpers.h"
+#include "FoldGuard.h"
 #include "HandleMaps.h"
 #include "HandleMotion.h"
 #include "LandmarkBinder.h"
@@ -849,6 +850,85 @@ struct Coverage
   std::vector<std::atomic<int>> Hits;
   std::atomic<bool> Stray{ false };
 };
+}
+
+namespace
+{
+// A 2 x 2 square of unit quads (two triangles each, facing +z) with an ear below its first
+// edge: the triangle (1, 0, 9), its apex 9 at (0.3, -apexHeight).
+vtkSmartPointer<vtkPolyData> SquareWithEar(double apexHeight)
+{
+  auto square = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      points->InsertNextPoint(i, j, 0.0);
+    }
+  }
+  points->InsertNextPoint(0.3, -apexHeight, 0.0);
+  vtkNew<vtkCellArray> triangles;
+  for (vtkIdType a : { 0, 1, 3, 4 })
+  {
+    const vtkIdType lower[3] = { a, a + 1, a + 4 }, upper[3] = { a, a + 4, a + 3 };
+    triangles->InsertNextCell(3, lower);
+    triangles->InsertNextCell(3, upper);
+  }
+  const vtkIdType ear[3] = { 1, 0, 9 };
+  triangles->InsertNextCell(3, ear);
+  square->SetPoints(points);
+  square->SetPolys(triangles);
+  return square;
+}
+
+// `rest` turned by 90 degrees about x; `over`: point 9 reflected across the x axis first, the
+// ear turned over.
+vtkSmartPointer<vtkPolyData> Turned(vtkPolyData* rest, bool over)
+{
+  auto turned = vtkSmartPointer<vtkPolyData>::New();
+  turned->DeepCopy(rest);
+  for (vtkIdType i = 0; i < turned->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    turned->GetPoint(i, p);
+    const double y = i == 9 && over ? -p[1] : p[1];
+    turned->GetPoints()->SetPoint(i, p[0], -p[2], y);
+  }
+  return turned;
+}
+}
+
+TEST(FoldGuard, ASliverTurnedOverIsTurnedBackAndNothingElse)
+{
+  // The square turned rigidly at the guard's start, then its ear turned over. Required: the
+  // sliver is mended, its apex where the turn takes its rest position (to 1e-12) and every
+  // other point bit-identical; a fat triangle turned over is left to the guard's other checks
+  // (not mended).
+  auto rest = SquareWithEar(0.01);
+  auto turned = Turned(rest, true);
+  lep::FoldGuard guard;
+  guard.Reset(rest->GetNumberOfPoints());
+  guard.Remember(Turned(rest, false));
+  vtkNew<vtkPolyData> before;
+  before->DeepCopy(turned);
+  EXPECT_EQ(guard.MendSlivers(rest, turned), 1);
+  const double expected[3] = { 0.3, 0.0, -0.01 };
+  double apex[3];
+  turned->GetPoint(9, apex);
+  EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(apex, expected)), 1e-12);
+  for (vtkIdType i = 0; i < 9; ++i)
+  {
+    double p[3], q[3];
+    turned->GetPoint(i, p);
+    before->GetPoint(i, q);
+    EXPECT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "point " << i;
+  }
+  auto fat = SquareWithEar(1.0);
+  auto fatTurned = Turned(fat, true);
+  guard.Remember(Turned(fat, false));
+  EXPECT_EQ(guard.MendSlivers(fat, fatTurned), 0);
 }
 
 TEST(ThreadPool, CoversEachIndexOnceOnItsOwnThreadsAgainAndAgain)

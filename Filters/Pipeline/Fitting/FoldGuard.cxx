@@ -20,6 +20,8 @@ namespace
 // head's one triangle turned over was landed to a 2,000th of its true area).
 constexpr double LandingTilt = 0.8660;
 constexpr double LandingShrink = 0.25;
+// A sliver: a triangle whose height over its longest edge is under this share of it.
+constexpr double SliverHeight = 0.05;
 
 // Each polygon's normal times its area (a fan's sum): a collapsed polygon's is zero.
 std::vector<std::array<double, 3>> AreaNormals(vtkPolyData* shape)
@@ -131,6 +133,109 @@ int FoldGuard::Land(vtkPolyData* shape, const std::vector<std::array<double, 3>>
     }
   }
   return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
+}
+
+int FoldGuard::MendSlivers(vtkPolyData* rest, vtkPolyData* shape) const
+{
+  const std::vector<std::array<double, 3>> now = AreaNormals(shape);
+  if (now.size() != this->Normals.size() || rest->GetNumberOfPoints() != shape->GetNumberOfPoints())
+  {
+    return 0;
+  }
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  const vtkIdType firstPolygon = shape->GetNumberOfVerts() + shape->GetNumberOfLines();
+  auto turned = [&](std::size_t c) { return vtkMath::Dot(now[c].data(), this->Normals[c].data()) < 0.0; };
+  // Around each point, the area normals of the polygons that did not turn over: the side a
+  // mended sliver faces.
+  std::vector<std::array<double, 3>> around(shape->GetNumberOfPoints(), { { 0.0, 0.0, 0.0 } });
+  std::vector<std::size_t> slivers;
+  for (std::size_t c = 0; c < now.size(); ++c)
+  {
+    shape->GetCellPoints(firstPolygon + static_cast<vtkIdType>(c), count, ids);
+    if (turned(c))
+    {
+      slivers.push_back(c); // a candidate: checked against the rest shape below
+      continue;
+    }
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      vtkMath::Add(around[ids[k]].data(), now[c].data(), around[ids[k]].data());
+    }
+  }
+  int mended = 0;
+  vtkSmartPointer<vtkPoints> points;
+  for (const std::size_t c : slivers)
+  {
+    shape->GetCellPoints(firstPolygon + static_cast<vtkIdType>(c), count, ids);
+    if (count != 3)
+    {
+      continue;
+    }
+    // The base: the rest triangle's longest edge, from a to b in the triangle's order, so that
+    // its normal is (b - a) x (apex - a).
+    double r[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      rest->GetPoint(ids[k], r[k]);
+    }
+    int first = 0;
+    for (int k = 1; k < 3; ++k)
+    {
+      if (vtkMath::Distance2BetweenPoints(r[k], r[(k + 1) % 3]) >
+        vtkMath::Distance2BetweenPoints(r[first], r[(first + 1) % 3]))
+      {
+        first = k;
+      }
+    }
+    const int second = (first + 1) % 3, apex = (first + 2) % 3;
+    double base[3], offset[3];
+    vtkMath::Subtract(r[second], r[first], base);
+    vtkMath::Subtract(r[apex], r[first], offset);
+    const double length2 = vtkMath::Dot(base, base);
+    if (length2 == 0.0)
+    {
+      continue;
+    }
+    const double along = vtkMath::Dot(offset, base) / length2;
+    double height[3] = { offset[0] - along * base[0], offset[1] - along * base[1], offset[2] - along * base[2] };
+    const double restHeight = vtkMath::Norm(height);
+    if (restHeight >= SliverHeight * std::sqrt(length2))
+    {
+      continue;
+    }
+    if (!points)
+    {
+      points = vtkSmartPointer<vtkPoints>::New();
+      points->SetDataType(shape->GetPoints()->GetDataType()); // DeepCopy keeps its own type
+      points->DeepCopy(shape->GetPoints());
+    }
+    double a[3], b[3], side[3], facing[3], edge[3];
+    points->GetPoint(ids[first], a);
+    points->GetPoint(ids[second], b);
+    vtkMath::Subtract(b, a, edge);
+    vtkMath::Add(around[ids[first]].data(), around[ids[second]].data(), facing);
+    // (b - a) x side along the facing normal: side = facing x (b - a), perpendicular to the base.
+    vtkMath::Cross(facing, edge, side);
+    const double sideLength = vtkMath::Norm(side);
+    if (sideLength == 0.0)
+    {
+      continue;
+    }
+    const double scale = restHeight * std::sqrt(vtkMath::Dot(edge, edge) / length2) / sideLength;
+    double moved[3];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      moved[axis] = a[axis] + along * edge[axis] + scale * side[axis];
+    }
+    points->SetPoint(ids[apex], moved);
+    ++mended;
+  }
+  if (points)
+  {
+    shape->SetPoints(points);
+  }
+  return mended;
 }
 
 int FoldGuard::GetNumberOfSetAside() const
