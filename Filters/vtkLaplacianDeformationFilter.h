@@ -372,6 +372,19 @@ public:
   vtkTypeBool GetFactoredAcrossProcesses();
   ///@}
 
+#ifndef __VTK_WRAP__
+  /**
+   * A drag preview's step (vtkLaplacianDragPreview): solves the last update's edit again with
+   * handle group 0's motion replaced, on that update's region and factors, and leaves the
+   * properties and the output as they were; GetSolvedEdit() then gives the new solution. False
+   * where anything but that motion changed since the update (a property, a transform, the
+   * input's content), or the solve failed.
+   */
+  bool SolveDragStep(const double translation[3], const double rotation[3]);
+  /** The surface the edits solve on: the input with its commits; null without an input. */
+  vtkPolyData* GetRestSurface();
+#endif
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -440,17 +453,9 @@ protected:
   vtkTypeBool RoleColors = 1;
 
 private:
-  friend class vtkLaplacianDragPreview;
-  friend class vtkLaplacianVolumeDeformationFilter; // runs the boundary's edit, reads its moved points
-
   // The properties that shape the system and the rotation model, and the output's arrays.
   LaplacianEditing::Pipeline::SolverSettings Settings();
   LaplacianEditing::Pipeline::OutputOptions Outputs() const;
-  // vtkLaplacianDragPreview's: a drag step of the last update's edit with group 0's motion
-  // replaced; false where anything but that motion changed since, or the solve failed. The rest
-  // surface it solved on.
-  bool SolveDragStep(const double translation[3], const double rotation[3]);
-  vtkPolyData* GetRestSurface();
   // The input's checks and the region's labels; false, with the error reported, on bad input.
   bool CheckInput(vtkPolyData* input);
   // PrintSelf's parts.

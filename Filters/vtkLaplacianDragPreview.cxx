@@ -42,11 +42,11 @@ bool vtkLaplacianDragPreview::Update(const double translation[3], const double r
 {
   const LaplacianEditing::Stopwatch stopwatch;
   vtkLaplacianDeformationFilter* filter = this->Filter;
-  if (!filter || !filter->SolveDragStep(translation, rotation))
+  lep::OutputEdit solved;
+  if (!filter || !filter->SolveDragStep(translation, rotation) || !filter->GetSolvedEdit(solved))
   {
     return false;
   }
-  const lep::OutputEdit solved = filter->GetEditPipeline().GetEdit();
   lep::PreviewParts& parts = this->Internals->Parts;
   if (!parts.IsBuiltFor(solved.RegionVersion))
   {

@@ -118,6 +118,16 @@ const lep::EditPipeline& vtkLaplacianEditFilter::GetEditPipeline() const
   return *this->Pipeline;
 }
 
+bool vtkLaplacianEditFilter::GetSolvedEdit(lep::OutputEdit& edit) const
+{
+  if (!this->Pipeline->HasSolved())
+  {
+    return false;
+  }
+  edit = this->Pipeline->GetEdit();
+  return true;
+}
+
 lep::SolverSettings vtkLaplacianEditFilter::SharedSettings() const
 {
   lep::SolverSettings settings;

@@ -33,6 +33,7 @@ namespace LaplacianEditing
 namespace Pipeline
 {
 class EditPipeline;
+struct OutputEdit;
 struct SolverSettings;
 class VolumeFollower;
 }
@@ -351,6 +352,15 @@ public:
   /** Megabytes of the factors held for the current region (0 if unknown). */
   double GetFactorMemory();
   ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * The last update's solved edit, for C++ code that builds on it (the drag preview, the volume
+   * filter's interior): its moved points and the solution they index, valid until the next
+   * update or drag step. False, with `edit` untouched, where the update solved nothing.
+   */
+  bool GetSolvedEdit(LaplacianEditing::Pipeline::OutputEdit& edit) const;
+#endif
 
 protected:
   vtkLaplacianEditFilter();

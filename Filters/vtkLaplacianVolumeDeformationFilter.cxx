@@ -192,9 +192,8 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
   this->UpdateProgress(0.4);
 
   // The interior follows the points the boundary's edit moved.
-  const lep::EditPipeline& pipeline = surface->GetEditPipeline();
-  const bool solved = pipeline.HasSolved();
-  const lep::OutputEdit edit = solved ? pipeline.GetEdit() : lep::OutputEdit();
+  lep::OutputEdit edit;
+  const bool solved = surface->GetSolvedEdit(edit);
   lep::VolumeFollower::Settings settings;
   settings.Iterations = this->VolumeIterations;
   settings.DragIterations = this->DragVolumeIterations;
