@@ -146,6 +146,15 @@ int FoldGuard::MendSlivers(vtkPolyData* rest, vtkPolyData* shape) const
   const vtkIdType* ids = nullptr;
   const vtkIdType firstPolygon = shape->GetNumberOfVerts() + shape->GetNumberOfLines();
   auto turned = [&](std::size_t c) { return vtkMath::Dot(now[c].data(), this->Normals[c].data()) < 0.0; };
+  bool anyTurned = false;
+  for (std::size_t c = 0; c < now.size() && !anyTurned; ++c)
+  {
+    anyTurned = turned(c);
+  }
+  if (!anyTurned)
+  {
+    return 0; // most fits: no pass over the points' neighbourhoods
+  }
   // Around each point, the area normals of the polygons that did not turn over: the side a
   // mended sliver faces.
   std::vector<std::array<double, 3>> around(shape->GetNumberOfPoints(), { { 0.0, 0.0, 0.0 } });
