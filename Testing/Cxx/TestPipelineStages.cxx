@@ -33,6 +33,7 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkVersionMacros.h"
 
@@ -55,6 +56,26 @@ namespace lep = LaplacianEditing::Pipeline;
 
 namespace
 {
+// The ranges `array` keeps (whole and finite, of each component and of the magnitude) are those
+// a copy that caches none computes.
+void ExpectFreshRanges(vtkDataArray* array, const std::string& when)
+{
+  const vtkSmartPointer<vtkDataArray> fresh = vtk::TakeSmartPointer(array->NewInstance());
+  fresh->DeepCopy(array);
+  for (int c = -1; c < 3; ++c)
+  {
+    double kept[2], computed[2];
+    array->GetRange(kept, c);
+    fresh->GetRange(computed, c);
+    EXPECT_EQ(kept[0], computed[0]) << when << ", component " << c;
+    EXPECT_EQ(kept[1], computed[1]) << when << ", component " << c;
+    array->GetFiniteRange(kept, c);
+    fresh->GetFiniteRange(computed, c);
+    EXPECT_EQ(kept[0], computed[0]) << when << ", finite component " << c;
+    EXPECT_EQ(kept[1], computed[1]) << when << ", finite component " << c;
+  }
+}
+
 // An n x n grid of unit squares, each split into two triangles, at height z = 0, with point
 // normals; `offset` moves it along x.
 vtkSmartPointer<vtkPolyData> Grid(int n, double offset = 0.0)
@@ -435,22 +456,6 @@ TEST(OutputArray, KeepsTheRangesVTKCachesRightWithoutAPassOverTheArray)
   double value = 0.0;
   vtkIdType at = 5;
   auto write = [&](vtkDataArray* array) { array->SetTuple3(at, value, -value, 0.5 * value); };
-  auto expectFreshRanges = [](vtkDataArray* array, const char* when) {
-    vtkNew<vtkDoubleArray> fresh;
-    fresh->DeepCopy(array);
-    for (int c = -1; c < 3; ++c)
-    {
-      double kept[2], computed[2];
-      array->GetRange(kept, c);
-      fresh->GetRange(computed, c);
-      EXPECT_EQ(kept[0], computed[0]) << when << ", component " << c;
-      EXPECT_EQ(kept[1], computed[1]) << when << ", component " << c;
-      array->GetFiniteRange(kept, c);
-      fresh->GetFiniteRange(computed, c);
-      EXPECT_EQ(kept[0], computed[0]) << when << ", finite component " << c;
-      EXPECT_EQ(kept[1], computed[1]) << when << ", finite component " << c;
-    }
-  };
   auto expectCarried = [](vtkDataArray* array, const char* when) {
     EXPECT_TRUE(array->GetInformation()->Has(vtkAbstractArray::PER_COMPONENT()))
       << when << ": carried over, not dropped";
@@ -460,33 +465,33 @@ TEST(OutputArray, KeepsTheRangesVTKCachesRightWithoutAPassOverTheArray)
   rest->GetRange(restRange, 0); // the rest's cache, which a fresh copy takes
   vtkDataArray* array = output.Update(rest, { 5 }, 1, write);
   expectCarried(array, "after the copy");
-  expectFreshRanges(array, "after the copy");
+  ExpectFreshRanges(array, "after the copy");
   value = 500.0; // beyond every extreme: a new maximum, the minima kept
   ASSERT_EQ(output.Update(rest, { 5 }, 2, write), array);
   expectCarried(array, "after a write beyond the range");
-  expectFreshRanges(array, "after a write beyond the range");
+  ExpectFreshRanges(array, "after a write beyond the range");
   value = 3.0; // the written tuple held the maxima: the other tuples' extremes, measured once
   ASSERT_EQ(output.Update(rest, { 5 }, 3, write), array);
   expectCarried(array, "after a write back inside the range");
-  expectFreshRanges(array, "after a write back inside the range");
+  ExpectFreshRanges(array, "after a write back inside the range");
   value = -1000.0;
   at = 6;
   ASSERT_EQ(output.Update(rest, { 6 }, 4, write), array); // tuple 5 back to rest, 6 written
-  expectFreshRanges(array, "after a write elsewhere");
+  ExpectFreshRanges(array, "after a write elsewhere");
   value = 0.0; // tuple 6 held the minimum of component 0
   ASSERT_EQ(output.Update(rest, { 6 }, 5, write), array);
   expectCarried(array, "after a write that moves an extreme inside again");
-  expectFreshRanges(array, "after a write that moves an extreme inside again");
+  ExpectFreshRanges(array, "after a write that moves an extreme inside again");
   // Values that are not finite: the plain and the finite ranges part.
   value = std::numeric_limits<double>::infinity();
   ASSERT_EQ(output.Update(rest, { 6 }, 6, write), array);
-  expectFreshRanges(array, "after an infinite write");
+  ExpectFreshRanges(array, "after an infinite write");
   value = std::numeric_limits<double>::quiet_NaN();
   ASSERT_EQ(output.Update(rest, { 6 }, 7, write), array);
-  expectFreshRanges(array, "after a NaN write");
+  ExpectFreshRanges(array, "after a NaN write");
   value = 2.0;
   ASSERT_EQ(output.Update(rest, { 6 }, 8, write), array);
-  expectFreshRanges(array, "after a finite write again");
+  ExpectFreshRanges(array, "after a finite write again");
 }
 
 TEST(OutputArray, KeepsTheRangesItsWriterMeasured)
@@ -516,22 +521,6 @@ TEST(OutputArray, KeepsTheRangesItsWriterMeasured)
       p[2] = i == 7 ? offset : 0.5;
     }, output.WriteExtremes());
   };
-  auto expectFreshRanges = [](vtkDataArray* array, const std::string& when) {
-    vtkNew<vtkFloatArray> fresh;
-    fresh->DeepCopy(array);
-    for (int c = -1; c < 3; ++c)
-    {
-      double kept[2], computed[2];
-      array->GetRange(kept, c);
-      fresh->GetRange(computed, c);
-      EXPECT_EQ(kept[0], computed[0]) << when << ", component " << c;
-      EXPECT_EQ(kept[1], computed[1]) << when << ", component " << c;
-      array->GetFiniteRange(kept, c);
-      fresh->GetFiniteRange(computed, c);
-      EXPECT_EQ(kept[0], computed[0]) << when << ", finite component " << c;
-      EXPECT_EQ(kept[1], computed[1]) << when << ", finite component " << c;
-    }
-  };
   double range[2];
   rest->GetRange(range, 0);
   rest->GetFiniteRange(range, 0);
@@ -544,7 +533,7 @@ TEST(OutputArray, KeepsTheRangesItsWriterMeasured)
     vtkDataArray* written = output.Update(rest, ids, ++key, write);
     ASSERT_TRUE(!array || written == array) << "written in place";
     array = written;
-    expectFreshRanges(array, "after a write of " + std::to_string(value));
+    ExpectFreshRanges(array, "after a write of " + std::to_string(value));
   }
 }
 

@@ -117,6 +117,27 @@ double Distance(const double a[3], const double b[3])
   return std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
 }
 
+// The largest distance between the same point of two point sets of the same points.
+double LargestDistance(vtkPointSet* a, vtkPointSet* b)
+{
+  double largest = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    largest = std::max(largest, Distance(a->GetPoint(i), b->GetPoint(i)));
+  }
+  return largest;
+}
+
+// A settle the time limit cut ends where the uncut one does: settled, every target met, no
+// cell inverted; returns the largest distance from the uncut settle's points.
+double ExpectSettledAs(Filter* filter, Filter* uncut)
+{
+  EXPECT_EQ(filter->GetSettling(), 0);
+  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+  return LargestDistance(filter->GetOutput(), uncut->GetOutput());
+}
+
 // Every point farther than `radius` from `center` keeps its coordinates exactly; returns how
 // many points that covers.
 vtkIdType ExpectFarPointsUntouched(
@@ -528,15 +549,7 @@ SplitSettle SettleSplitByATimeLimit(bool rigid, bool fromDrag = true)
     filter->Update();
   }
   split.Iterations += filter->GetNumberOfVolumeIterations();
-  EXPECT_EQ(filter->GetSettling(), 0);
-  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
-  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
-  double largest = 0.0;
-  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
-  {
-    largest = std::max(largest,
-      Distance(filter->GetOutput()->GetPoint(i), uncut->GetOutput()->GetPoint(i)));
-  }
+  const double largest = ExpectSettledAs(filter, uncut);
   std::printf("%s%s: %d updates, %d of them the boundary's; the interior's settle %d iterations "
               "against the uncut's %d; %.3g of the beam's length from the uncut settle\n",
     rigid ? "ARAP" : "None", fromDrag ? "" : " from rest", split.Updates, split.BoundaryUpdates, split.Iterations,
@@ -603,15 +616,7 @@ TEST(VolumeDeformation, ALimitOnTheSurfaceFilterAloneCutsOnlyTheBoundarysSettle)
     filter->Update();
   }
   EXPECT_GT(updates, 2);
-  EXPECT_EQ(filter->GetSettling(), 0);
-  EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
-  EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
-  double largest = 0.0;
-  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
-  {
-    largest = std::max(largest,
-      Distance(filter->GetOutput()->GetPoint(i), uncut->GetOutput()->GetPoint(i)));
-  }
+  const double largest = ExpectSettledAs(filter, uncut);
   EXPECT_LT(largest / 8.0, 1e-4);
 }
 
@@ -949,11 +954,7 @@ TEST(VolumeDeformation, AWarpedVolumesSettleSplitByATimeLimitEndsSettled)
   auto* uncutGrid = vtkUnstructuredGrid::SafeDownCast(uncut->GetOutput());
   ASSERT_NE(cutGrid, nullptr);
   ASSERT_NE(uncutGrid, nullptr);
-  double largest = 0.0;
-  for (vtkIdType i = 0; i < beam->GetNumberOfPoints(); ++i)
-  {
-    largest = std::max(largest, Distance(cutGrid->GetPoint(i), uncutGrid->GetPoint(i)));
-  }
+  const double largest = LargestDistance(cutGrid, uncutGrid);
   std::printf("a warped volume's settle in %d updates: %.2e of the beam's length from the uncut "
               "warp's\n", updates, largest / 8.0);
   EXPECT_LT(largest / 8.0, 1e-4);
