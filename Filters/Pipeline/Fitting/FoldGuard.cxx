@@ -146,27 +146,29 @@ int FoldGuard::MendSlivers(vtkPolyData* rest, vtkPolyData* shape) const
   const vtkIdType* ids = nullptr;
   const vtkIdType firstPolygon = shape->GetNumberOfVerts() + shape->GetNumberOfLines();
   auto turned = [&](std::size_t c) { return vtkMath::Dot(now[c].data(), this->Normals[c].data()) < 0.0; };
-  bool anyTurned = false;
-  for (std::size_t c = 0; c < now.size() && !anyTurned; ++c)
+  // The candidates, checked against the rest shape below; most fits have none.
+  std::vector<std::size_t> slivers;
+  for (std::size_t c = 0; c < now.size(); ++c)
   {
-    anyTurned = turned(c);
+    if (turned(c))
+    {
+      slivers.push_back(c);
+    }
   }
-  if (!anyTurned)
+  if (slivers.empty())
   {
-    return 0; // most fits: no pass over the points' neighbourhoods
+    return 0;
   }
   // Around each point, the area normals of the polygons that did not turn over: the side a
   // mended sliver faces.
   std::vector<std::array<double, 3>> around(shape->GetNumberOfPoints(), { { 0.0, 0.0, 0.0 } });
-  std::vector<std::size_t> slivers;
   for (std::size_t c = 0; c < now.size(); ++c)
   {
-    shape->GetCellPoints(firstPolygon + static_cast<vtkIdType>(c), count, ids);
     if (turned(c))
     {
-      slivers.push_back(c); // a candidate: checked against the rest shape below
       continue;
     }
+    shape->GetCellPoints(firstPolygon + static_cast<vtkIdType>(c), count, ids);
     for (vtkIdType k = 0; k < count; ++k)
     {
       vtkMath::Add(around[ids[k]].data(), now[c].data(), around[ids[k]].data());
