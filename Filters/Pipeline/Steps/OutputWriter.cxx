@@ -96,12 +96,11 @@ void OutputWriter::Write(
   output->SetPoints(this->Points.Update(rest->GetPoints(), moved, key, [&](vtkDataArray* points) {
     this->OrderByRows(*edit);
     OutputArray::SetTuples<3>(points, this->RowOrderedIds, [&](vtkIdType j, double* p) {
-      const int i = this->RowOrdered[j];
       le::Vector3 position =
-        edit->Solution->row(edit->Moved->Rows[i]).transpose() / edit->Scale + edit->Center;
-      if (!edit->Moved->Offsets.empty())
+        edit->Solution->row(this->RowOrderedRows[j]).transpose() / edit->Scale + edit->Center;
+      if (!this->RowOrderedOffsets.empty())
       {
-        position += edit->Moved->Offsets[i];
+        position += this->RowOrderedOffsets[j];
       }
       std::copy(position.data(), position.data() + 3, p);
     }, this->Points.WriteExtremes());
@@ -146,19 +145,26 @@ void OutputWriter::Write(
 
 void OutputWriter::OrderByRows(const Edit& edit)
 {
-  if (this->RowOrderVersion == edit.RegionVersion && this->RowOrdered.size() == edit.Moved->Ids.size())
+  const MovedPoints& moved = *edit.Moved;
+  if (this->RowOrderVersion == edit.RegionVersion && this->RowOrderedIds.size() == moved.Ids.size())
   {
     return;
   }
-  const std::vector<int>& rows = edit.Moved->Rows;
-  this->RowOrdered.resize(rows.size());
-  std::iota(this->RowOrdered.begin(), this->RowOrdered.end(), 0);
-  std::stable_sort(this->RowOrdered.begin(), this->RowOrdered.end(),
-    [&](int a, int b) { return rows[a] < rows[b]; });
-  this->RowOrderedIds.resize(rows.size());
-  for (std::size_t j = 0; j < rows.size(); ++j)
+  std::vector<int> order(moved.Rows.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(
+    order.begin(), order.end(), [&](int a, int b) { return moved.Rows[a] < moved.Rows[b]; });
+  this->RowOrderedIds.resize(order.size());
+  this->RowOrderedRows.resize(order.size());
+  this->RowOrderedOffsets.resize(moved.Offsets.empty() ? 0 : order.size());
+  for (std::size_t j = 0; j < order.size(); ++j)
   {
-    this->RowOrderedIds[j] = edit.Moved->Ids[this->RowOrdered[j]];
+    this->RowOrderedIds[j] = moved.Ids[order[j]];
+    this->RowOrderedRows[j] = moved.Rows[order[j]];
+    if (!moved.Offsets.empty())
+    {
+      this->RowOrderedOffsets[j] = moved.Offsets[order[j]];
+    }
   }
   this->RowOrderVersion = edit.RegionVersion;
 }

@@ -62,10 +62,11 @@ public:
 
 private:
   vtkDataArray* UpdateRoles(vtkIdType count, const Edit* edit);
-  // The moved points in the order of their solution rows (RowOrdered: their indices in
-  // edit.Moved; RowOrderedIds: their ids), once per region. The points' write reads the
-  // solution in that order: in the ids' order it read three columns at random a point, the
-  // largest part of a 610k-vertex region's write.
+  // The moved points in the order of their solution rows (their ids, rows and offsets), once
+  // per region. The points' write reads the solution in that order: in the ids' order it read
+  // three columns at random a point, the largest part of a 610k-vertex region's write; and it
+  // reads the rows and offsets copied in that order, where their lookup through the points'
+  // indices in edit.Moved was, at random again, 37% of the write's samples.
   void OrderByRows(const Edit& edit);
 
   OutputArray Points;
@@ -77,8 +78,9 @@ private:
   vtkSmartPointer<vtkSignedCharArray> FixedRoles;
   vtkSmartPointer<vtkLookupTable> RoleColors;
   std::uint64_t Writes = 0;
-  std::vector<int> RowOrdered;
   std::vector<vtkIdType> RowOrderedIds;
+  std::vector<int> RowOrderedRows;
+  std::vector<Vector3> RowOrderedOffsets; // empty where edit.Moved's are
   std::uint64_t RowOrderVersion = ~std::uint64_t(0);
 };
 
