@@ -19,6 +19,7 @@
 
 #include "TupleExtremes.h"
 
+#include "vtkAOSDataArrayTemplate.h"
 #include "vtkArrayDispatch.h"
 #include "vtkDataArrayRange.h"
 #include "vtkSMPThreadLocal.h"
@@ -74,12 +75,27 @@ public:
       auto tuples = vtk::DataArrayTupleRange<Components>(typed);
       using Stored = typename decltype(tuples)::ComponentType;
       vtkSMPThreadLocal<TupleExtremes> extremes{ TupleExtremes{ Components } };
-      vtkSMPTools::For(0, static_cast<vtkIdType>(ids.size()), [&](vtkIdType begin, vtkIdType end) {
+      const vtkIdType count = static_cast<vtkIdType>(ids.size());
+#if defined(__GNUC__)
+      // The ids need not be in order, and a store that misses the cache holds the next ones
+      // back: the tuples 32 ahead are fetched for writing first (contiguous arrays only; the
+      // points' write of a 610k-vertex region lost a third of its time, performance.md).
+      constexpr vtkIdType ahead = 32;
+      auto* aos = vtkAOSDataArrayTemplate<Stored>::FastDownCast(typed);
+      Stored* contiguous = aos ? aos->GetPointer(0) : nullptr;
+#endif
+      vtkSMPTools::For(0, count, [&](vtkIdType begin, vtkIdType end) {
         double values[Components];
         Stored stored[Components];
         TupleExtremes& local = extremes.Local();
         for (vtkIdType i = begin; i < end; ++i)
         {
+#if defined(__GNUC__)
+          if (contiguous && i + ahead < count)
+          {
+            __builtin_prefetch(contiguous + Components * ids[i + ahead], 1);
+          }
+#endif
           value(i, values);
           auto tuple = tuples[ids[i]];
           for (int c = 0; c < Components; ++c)
