@@ -29,11 +29,14 @@ constexpr double BandOverSpacing = 2.5;
 
 // Rows [first, last) of the prolongation, x = b + M b + u with (M | u) the rows' weighted sums
 // of the nodes' motions (3 x 4 column-major, 12 doubles each); coordinates by column, as
-// Positions holds them (`count` rows a column). Four doubles at a time: a 610k-vertex region's
-// drag step spent 9 ms here, its 9 weights a row at 12 scalar multiply-adds each, and a third
-// less so (Documentation/performance.md, "Large regions").
+// Positions holds them (`count` rows a column). A row's weights sum to one, so its first node's
+// motion plus the others' differences from it, weighted, is the sum: the first weight is never
+// read, and where the nodes move alike (a rigid motion) the differences vanish and the blend is
+// exact whatever the weights' precision, which lets them be floats. Four doubles at a time: the
+// blend is bound by memory (9 weights a row, with their nodes; a 610k-vertex region's drag step
+// spent 6 ms here, Documentation/performance.md, "Large regions").
 LAPLACIAN_EDITING_SIMD_CLONES
-void BlendRows(int first, int last, const int* offsets, const int* nodes, const double* weights,
+void BlendRows(int first, int last, const int* offsets, const int* nodes, const float* weights,
   const double* motions, const double* base, double* out, int count)
 {
 #if defined(__GNUC__)
@@ -41,29 +44,51 @@ void BlendRows(int first, int last, const int* offsets, const int* nodes, const 
 #endif
   for (int k = first; k < last; ++k)
   {
+    if (offsets[k] == offsets[k + 1]) // no weights (a handle's row, which Prolong writes)
+    {
+      for (int r = 0; r < 3; ++r)
+      {
+        out[r * count + k] = base[r * count + k];
+      }
+      continue;
+    }
     double blend[12];
+    const double* firstMotion = motions + 12 * nodes[offsets[k]];
 #if defined(__GNUC__)
+    // The first motion is loaded where it is used: kept in an array of lanes, it went through the
+    // stack, its stores stalling the loads that followed.
     Lanes sum[3] = {};
-    for (int e = offsets[k]; e < offsets[k + 1]; ++e)
+    for (int e = offsets[k] + 1; e < offsets[k + 1]; ++e)
     {
       const double w = weights[e];
       const double* motion = motions + 12 * nodes[e];
       for (int v = 0; v < 3; ++v)
       {
-        Lanes part;
+        Lanes part, head;
         std::memcpy(&part, motion + 4 * v, sizeof(part));
-        sum[v] += w * part;
+        std::memcpy(&head, firstMotion + 4 * v, sizeof(head));
+        sum[v] += w * (part - head);
       }
+    }
+    for (int v = 0; v < 3; ++v)
+    {
+      Lanes head;
+      std::memcpy(&head, firstMotion + 4 * v, sizeof(head));
+      sum[v] += head;
     }
     std::memcpy(blend, sum, sizeof(blend));
 #else
     std::fill(blend, blend + 12, 0.0);
-    for (int e = offsets[k]; e < offsets[k + 1]; ++e)
+    for (int e = offsets[k] + 1; e < offsets[k + 1]; ++e)
     {
       for (int c = 0; c < 12; ++c)
       {
-        blend[c] += weights[e] * motions[12 * nodes[e] + c];
+        blend[c] += weights[e] * (motions[12 * nodes[e] + c] - firstMotion[c]);
       }
+    }
+    for (int c = 0; c < 12; ++c)
+    {
+      blend[c] += firstMotion[c];
     }
 #endif
     const double b[3] = { base[k], base[count + k], base[2 * count + k] };
@@ -387,7 +412,10 @@ void RegionProxy::Weigh(const SurfaceMesh& mesh, const EditRegion& region, const
   const int n = region.GetNumberOfVertices();
   this->HandleGroups = region.HandleGroups;
   this->Rest.resize(n, 3);
-  // Each row's candidates: its cell's node and the nodes two rings around it on the proxy.
+  // Each row's candidates: its cell's node and the nodes two rings around it on the proxy. The
+  // fixed ones never move, so their share of a row's weight goes to one still node after the
+  // moving ones (BlendRows needs rows that sum to one).
+  const int stillNode = this->Region.GetNumberOfVertices();
   std::vector<std::vector<std::pair<int, double>>> rows(n);
   loop(0, n, [&](int first, int last) {
     std::vector<int> candidates;
@@ -413,6 +441,7 @@ void RegionProxy::Weigh(const SurfaceMesh& mesh, const EditRegion& region, const
       std::sort(candidates.begin(), candidates.end());
       candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
       double total = 0.0;
+      double still = 0.0; // the fixed nodes' share
       auto& row = rows[k];
       for (int node : candidates)
       {
@@ -423,6 +452,14 @@ void RegionProxy::Weigh(const SurfaceMesh& mesh, const EditRegion& region, const
         {
           row.emplace_back(this->RoiRowOfNode[node], w);
         }
+        else
+        {
+          still += w;
+        }
+      }
+      if (still > 0.0)
+      {
+        row.emplace_back(stillNode, still);
       }
       for (auto& entry : row)
       {
@@ -450,7 +487,7 @@ void RegionProxy::Weigh(const SurfaceMesh& mesh, const EditRegion& region, const
     for (std::size_t e = 0; e < rows[k].size(); ++e)
     {
       this->WeightNodes[this->WeightOffsets[k] + e] = rows[k][e].first;
-      this->Weights[this->WeightOffsets[k] + e] = rows[k][e].second;
+      this->Weights[this->WeightOffsets[k] + e] = static_cast<float>(rows[k][e].second);
     }
   }
 }
@@ -475,7 +512,8 @@ void RegionProxy::Prolong(const Positions& base, const NodeShape& from, const No
   // M = T T0^-1 - I and u = c - c0 - M c0, blended per row.
   const int nodes = this->Region.GetNumberOfVertices();
   std::vector<AffineMap>& motions = this->Motions;
-  motions.resize(nodes);
+  motions.resize(nodes + 1);
+  motions[nodes].setZero(); // the still node's (Weigh)
   loop(0, nodes, [&](int first, int last) {
     for (int r = first; r < last; ++r)
     {
@@ -512,12 +550,33 @@ void RegionProxy::Interpolate(const Positions& nodeValues, Positions& fineValues
   const int n = static_cast<int>(this->Rest.rows());
   fineValues.resize(n, nodeValues.cols());
   loop(0, n, [&](int first, int last) {
+    // As BlendRows sums: the first node's value and the others' differences from it; the still
+    // node's value is 0.
+    const int still = static_cast<int>(nodeValues.rows());
+    Eigen::RowVectorXd head(nodeValues.cols()), value(nodeValues.cols());
     for (int k = first; k < last; ++k)
     {
       fineValues.row(k).setZero();
       for (int e = this->WeightOffsets[k]; e < this->WeightOffsets[k + 1]; ++e)
       {
-        fineValues.row(k) += this->Weights[e] * nodeValues.row(this->WeightNodes[e]);
+        const int node = this->WeightNodes[e];
+        if (node < still)
+        {
+          value = nodeValues.row(node);
+        }
+        else
+        {
+          value.setZero();
+        }
+        if (e == this->WeightOffsets[k])
+        {
+          head = value;
+          fineValues.row(k) = head;
+        }
+        else
+        {
+          fineValues.row(k) += this->Weights[e] * (value - head);
+        }
       }
     }
   });

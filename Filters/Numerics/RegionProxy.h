@@ -92,13 +92,15 @@ private:
   EditRegion Region;
   std::vector<int> RoiRowOfNode; // per node, its row in Region.Vertices (-1: fixed)
   // Per fine ROI row: its handle group (-1: free), rest position, and its moving nodes' rows
-  // (of the proxy's region) and weights, compressed.
+  // (of the proxy's region) and weights, compressed; the fixed nodes' share goes to a still
+  // node, one row past the region's, so a free row's weights sum to one (BlendRows). Floats:
+  // the blend reads them as differences from its first node, exact for rigid motions.
   std::vector<int> HandleGroups;
   std::vector<int> HandleRows; // the rows of handle groups, in order
   Positions Rest;
   std::vector<int> WeightOffsets;
   std::vector<int> WeightNodes;
-  std::vector<double> Weights;
+  std::vector<float> Weights;
   // Prolong's per-node motions, kept between drag steps.
   mutable std::vector<AffineMap> Motions;
 };
