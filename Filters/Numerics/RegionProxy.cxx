@@ -547,37 +547,27 @@ void RegionProxy::Prolong(const Positions& base, const NodeShape& from, const No
 
 void RegionProxy::Interpolate(const Positions& nodeValues, Positions& fineValues, const ParallelFor& loop) const
 {
+  // The nodes' values with the still node's, 0, after them, summed as BlendRows sums: the first
+  // node's value and the others' differences from it, weighted.
+  Positions values(nodeValues.rows() + 1, nodeValues.cols());
+  values.topRows(nodeValues.rows()) = nodeValues;
+  values.bottomRows(1).setZero();
   const int n = static_cast<int>(this->Rest.rows());
-  fineValues.resize(n, nodeValues.cols());
+  fineValues.setZero(n, nodeValues.cols());
   loop(0, n, [&](int first, int last) {
-    // As BlendRows sums: the first node's value and the others' differences from it; the still
-    // node's value is 0.
-    const int still = static_cast<int>(nodeValues.rows());
-    Eigen::RowVectorXd head(nodeValues.cols()), value(nodeValues.cols());
     for (int k = first; k < last; ++k)
     {
-      fineValues.row(k).setZero();
-      for (int e = this->WeightOffsets[k]; e < this->WeightOffsets[k + 1]; ++e)
+      const int begin = this->WeightOffsets[k];
+      if (begin == this->WeightOffsets[k + 1])
       {
-        const int node = this->WeightNodes[e];
-        if (node < still)
-        {
-          value = nodeValues.row(node);
-        }
-        else
-        {
-          value.setZero();
-        }
-        if (e == this->WeightOffsets[k])
-        {
-          head = value;
-          fineValues.row(k) = head;
-        }
-        else
-        {
-          fineValues.row(k) += this->Weights[e] * (value - head);
-        }
+        continue; // a handle's row
       }
+      const auto head = values.row(this->WeightNodes[begin]);
+      for (int e = begin + 1; e < this->WeightOffsets[k + 1]; ++e)
+      {
+        fineValues.row(k) += this->Weights[e] * (values.row(this->WeightNodes[e]) - head);
+      }
+      fineValues.row(k) += head;
     }
   });
 }
