@@ -7,6 +7,7 @@
 #include "EditRegion.h"
 #include "GeodesicDistance.h"
 #include "ImplicitSimilaritySystem.h"
+#include "InjectiveDeformation.h"
 #include "LaplacianOperator.h"
 #include "SmoothWarp.h"
 #include "SurfaceMesh.h"
@@ -17,7 +18,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <utility>
 #include <cstdio>
 #include <limits>
@@ -777,6 +780,54 @@ TEST(ThinPlateSpline, RefusesLandmarksThatFixNoSpline)
   EXPECT_TRUE(spline.IsEmpty());
   EXPECT_FALSE(spline.Fit(BoxLandmarks(ThinPlateSpline::MaximumLandmarks + 1, 9))) << "too many";
   EXPECT_TRUE(spline.Fit(BoxLandmarks(4, 10)));
+}
+
+// The quality pass takes tetrahedra eight at a time in vector lanes (a batch short of eight
+// repeats its last): each result is the tetrahedron's own, Verdict's scaled Jacobian.
+TEST(InjectiveDeformation, ScaledJacobiansInBatchesAreEachTetrahedronsOwn)
+{
+  const double s = 1.0 / std::sqrt(2.0);
+  std::vector<std::array<double, 3>> points = { { -1, 0, -s }, { 1, 0, -s }, { 0, 1, s },
+    { 0, -1, s } };                                          // regular: 1
+  points.insert(points.end(), { points[1], points[0], points[2], points[3] }); // inverted: -1
+  points.insert(points.end(), { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }); // flat: 0
+  points.insert(points.end(), { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }); // a point twice: 0
+  std::srand(7);
+  while (points.size() < 4 * 11)
+  {
+    points.push_back({ std::rand() / double(RAND_MAX), std::rand() / double(RAND_MAX),
+      std::rand() / double(RAND_MAX) });
+  }
+  std::vector<const double*> corners;
+  for (const auto& p : points)
+  {
+    corners.push_back(p.data());
+  }
+  std::vector<double> batch(11);
+  InjectiveDeformation::TetrahedronScaledJacobians(corners.data(), 11, batch.data());
+  for (int t = 0; t < 11; ++t)
+  {
+    const double* const* tet = corners.data() + 4 * t;
+    EXPECT_EQ(batch[t], InjectiveDeformation::TetrahedronScaledJacobian(tet[0], tet[1], tet[2], tet[3]))
+      << "tetrahedron " << t;
+    // Verdict's definition: sqrt(2) times the smallest corner's det / (product of its edges).
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int c = 0; c < 4 && t >= 4; ++c)
+    {
+      const Eigen::Vector3d a(tet[c]), b(tet[(c + 1) % 4]), d(tet[(c + 2) % 4]), e(tet[(c + 3) % 4]);
+      const double sign = c % 2 ? -1.0 : 1.0; // odd corners see the others in reverse order
+      smallest = std::min(smallest, sign * (b - a).dot((d - a).cross(e - a)) /
+          ((b - a).norm() * (d - a).norm() * (e - a).norm()));
+    }
+    if (t >= 4)
+    {
+      EXPECT_NEAR(batch[t], std::sqrt(2.0) * smallest, 1e-12) << "tetrahedron " << t;
+    }
+  }
+  EXPECT_NEAR(batch[0], 1.0, 1e-12);
+  EXPECT_NEAR(batch[1], -1.0, 1e-12);
+  EXPECT_EQ(batch[2], 0.0);
+  EXPECT_EQ(batch[3], 0.0);
 }
 
 TEST(SmoothWarp, ReproducesAnAffineMapAtAnySmoothness)

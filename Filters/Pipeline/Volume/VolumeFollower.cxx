@@ -340,26 +340,42 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   std::vector<char>& failed = this->Failed;
   failed.resize(cells.size());
   SMPFor(0, static_cast<int>(cells.size()), [&](int first, int last) {
-    for (int k = first; k < last; ++k)
+    // Tetrahedra from the zone's own rows, a batch at a time (this pass runs at every drag step,
+    // and the grid's lookups cost it more than the arithmetic); other cells through the grid.
+    constexpr int Batch = 64;
+    const double* corners[4 * Batch];
+    double quality[Batch];
+    for (int begin = first; begin < last; begin += Batch)
     {
-      // A tetrahedron from the zone's own rows: this pass runs at every drag step, and the
-      // grid's lookups cost it more than the arithmetic.
-      const int t = this->Zone.CellTets[k];
-      if (t >= 0)
+      const int end = std::min(last, begin + Batch);
+      int tets = 0;
+      for (int k = begin; k < end; ++k)
       {
-        const auto row = [&](int i) { return this->Placed.row(this->Zone.Tets(t, i)).data(); };
-        this->ZoneQuality[k] =
-          InjectiveDeformation::TetrahedronScaledJacobian(row(0), row(1), row(2), row(3));
-        bool leftShort = false;
-        for (int i = 0; i < 4 && anyMissed; ++i)
+        const int t = this->Zone.CellTets[k];
+        for (int i = 0; i < 4 && t >= 0; ++i)
         {
-          leftShort = leftShort || misses[this->Zone.Tets(t, i)] > this->Snap;
+          corners[4 * tets + i] = this->Placed.row(this->Zone.Tets(t, i)).data();
         }
-        failed[k] = this->ZoneQuality[k] <= 0.0 || leftShort;
-        continue;
+        tets += t >= 0;
       }
-      this->ZoneQuality[k] = this->Mesh.Quality(cells[k], position);
-      failed[k] = this->ZoneQuality[k] <= 0.0 || (anyMissed && this->Mesh.AnyPoint(cells[k], missed));
+      InjectiveDeformation::TetrahedronScaledJacobians(corners, tets, quality);
+      for (int k = begin, next = 0; k < end; ++k)
+      {
+        const int t = this->Zone.CellTets[k];
+        if (t >= 0)
+        {
+          this->ZoneQuality[k] = quality[next++];
+          bool leftShort = false;
+          for (int i = 0; i < 4 && anyMissed; ++i)
+          {
+            leftShort = leftShort || misses[this->Zone.Tets(t, i)] > this->Snap;
+          }
+          failed[k] = this->ZoneQuality[k] <= 0.0 || leftShort;
+          continue;
+        }
+        this->ZoneQuality[k] = this->Mesh.Quality(cells[k], position);
+        failed[k] = this->ZoneQuality[k] <= 0.0 || (anyMissed && this->Mesh.AnyPoint(cells[k], missed));
+      }
     }
   });
   this->LastFacts.FailedCells = static_cast<int>(std::count(failed.begin(), failed.end(), 1));
