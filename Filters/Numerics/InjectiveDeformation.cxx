@@ -685,7 +685,7 @@ double InjectiveDeformation::Gradient(const Positions& points, const Positions& 
           energies[c] = batch[j];
           if (batch[j] == Infinity)
           {
-            continue;
+            continue; // flat or inverted (or overflowed): a start that no step leaves
           }
           const int* tet = this->Tets.data() + 4 * c;
           for (int i = 0; i < 4; ++i)
