@@ -222,6 +222,8 @@ public:
   const SparseCholesky& GetFactor() const { return this->Factor; }
   /// The global step's relative residual where it iterates (SolverBackend::Multigrid).
   void SetSolveTolerance(double tolerance) { this->Factor.SetIterativeTolerance(tolerance); }
+  /// The loop the global step's solver runs through, where it is not the one Build had.
+  void SetParallelFor(const ParallelFor& loop) { this->Factor.SetParallelFor(loop); }
   const PointConstraints& GetPoints() const { return this->Points; }
 
 private:

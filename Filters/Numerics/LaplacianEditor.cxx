@@ -286,7 +286,7 @@ std::string LaplacianEditor::BuildLargeArap(int proxyNodes)
 {
   auto large = std::make_unique<ProxyArapSolver>();
   ++this->NumberOfFactorizationAttempts;
-  const std::string error = large->Build(*this->Mesh, this->Region, this->SystemBuiltFrom, proxyNodes, this->Loop);
+  const std::string error = large->Build(this->Mesh, this->Region, this->SystemBuiltFrom, proxyNodes, this->Loop);
   if (!error.empty())
   {
     return error;
@@ -357,6 +357,10 @@ EditStatus LaplacianEditor::Solve(
     this->LastArap = rotation.Arap.Dragging
       ? this->LargeArap->Drag(handleMaps, rotation.Arap, roiPositions, this->Loop)
       : this->LargeArap->Settle(handleMaps, rotation.Arap, roiPositions, this->Loop);
+    if (!this->LargeArap->GetSettleError().empty())
+    {
+      status.Error = "cannot settle at full resolution: " + this->LargeArap->GetSettleError();
+    }
   }
   else if (rotation.Mode == RotationMode::AsRigidAsPossible)
   {

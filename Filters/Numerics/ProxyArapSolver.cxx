@@ -1,5 +1,13 @@
 #include "ProxyArapSolver.h"
 
+#include <chrono>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 namespace LaplacianEditing
 {
 namespace
@@ -16,15 +24,32 @@ constexpr double SettleTolerance = 1e-4;
 // a drag whose handle jumps stays in the minimum's basin, where 2 left a 152k region's release
 // at 1.75 times the minimum's energy (Documentation/performance.md, "Large regions").
 constexpr int ProxyIterationsPerDragIteration = 2;
+// A settle that comes before the full-resolution system is built reports (and may be stopped)
+// this often while it waits: well within a drag frame.
+constexpr std::chrono::milliseconds WaitReportInterval(20);
 }
 
-std::string ProxyArapSolver::Build(const SurfaceMesh& mesh, const EditRegion& region,
+ProxyArapSolver::~ProxyArapSolver()
+{
+  if (this->FineBuild.valid())
+  {
+    this->FineBuild.wait();
+  }
+}
+
+std::string ProxyArapSolver::Build(std::shared_ptr<const SurfaceMesh> mesh, const EditRegion& region,
   const DeformationOptions& options, int nodes, const ParallelFor& loop)
 {
+  if (this->FineBuild.valid())
+  {
+    this->FineBuild.wait();
+  }
+  this->FineBuild = {};
+  this->FineError.clear();
   this->CoarseIterate = ArapIterate();
   this->FineIterate = ArapIterate();
   this->Dragged = false;
-  std::string error = this->Proxy.Build(mesh, region, nodes, loop);
+  std::string error = this->Proxy.Build(*mesh, region, nodes, loop);
   if (!error.empty())
   {
     return error;
@@ -43,7 +68,35 @@ std::string ProxyArapSolver::Build(const SurfaceMesh& mesh, const EditRegion& re
   this->Fine.SetSolveTolerance(SettleTolerance);
   this->Base = this->Proxy.GetRest();
   this->BaseNodes = this->Proxy.RestShape();
-  return this->Fine.Build(mesh, region, fine, loop);
+  // Why a thread: the full-resolution system is a third of a 610k region's set-up (1.1 of 2.9
+  // s), and only the settle needs it. Serial and at the lowest priority, so that the drag's own
+  // loops keep both cores: at normal priority its steps took 36-38 ms while the build ran, 22
+  // after (Documentation/performance.md, "Large regions").
+  this->FineBuild = std::async(std::launch::async,
+    [this, mesh, region, fine] {
+#ifdef __linux__
+      setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+#endif
+      return this->Fine.Build(*mesh, region, fine, SerialFor);
+    });
+  return {};
+}
+
+bool ProxyArapSolver::WaitForFine(const ArapOptions& options, const ParallelFor& loop)
+{
+  if (this->FineBuild.valid())
+  {
+    while (this->FineBuild.wait_for(WaitReportInterval) != std::future_status::ready)
+    {
+      if (options.Progress && !options.Progress(0.0))
+      {
+        return false;
+      }
+    }
+    this->FineError = this->FineBuild.get();
+    this->Fine.SetParallelFor(loop);
+  }
+  return this->FineError.empty();
 }
 
 RegionProxy::NodeShape ProxyArapSolver::Nodes(const std::vector<AffineMap>& handleMaps) const
@@ -94,6 +147,7 @@ ArapResult ProxyArapSolver::Drag(const std::vector<AffineMap>& handleMaps,
   const ArapResult result = this->Coarse.Solve(handleMaps, this->CoarseIterate, proxy, loop);
   this->Proxy.Prolong(this->Base, this->BaseNodes, this->Nodes(handleMaps), handleMaps, roiPositions, loop);
   this->LastMaps = handleMaps;
+  this->DragEnergy = result.Energy;
   this->Dragged = true;
   return result;
 }
@@ -101,14 +155,30 @@ ArapResult ProxyArapSolver::Drag(const std::vector<AffineMap>& handleMaps,
 ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
   const ArapOptions& options, Positions& roiPositions, const ParallelFor& loop)
 {
+  // The proxy's solve at these handles, where no drag reached them.
+  ArapOptions proxy = options;
+  proxy.Extrapolate = false;
+  proxy.Progress = nullptr; // the settle's own iterations report
   if (!this->Dragged && this->FineIterate.Points.rows() == 0)
   {
-    // A first solve without a drag starts from the proxy's solve at these handles.
-    ArapOptions proxy = options;
-    proxy.Extrapolate = false;
-    proxy.Progress = nullptr; // the settle's own iterations report
-    this->Drag(handleMaps, proxy, roiPositions, loop);
+    this->Drag(handleMaps, proxy, roiPositions, loop); // a first solve without a drag
   }
+  if (!this->WaitForFine(options, loop))
+  {
+    ArapResult waited;
+    if (handleMaps != this->LastMaps)
+    {
+      this->Drag(handleMaps, proxy, roiPositions, loop);
+    }
+    else
+    {
+      this->Proxy.Prolong(this->Base, this->BaseNodes, this->Nodes(this->LastMaps), this->LastMaps,
+        roiPositions, loop);
+    }
+    waited.Energy = this->DragEnergy;
+    return waited;
+  }
+  ArapOptions settle = options;
   if (this->Dragged)
   {
     // The full-resolution iteration starts from the dragged shape (prolonged again here rather
@@ -117,8 +187,8 @@ ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
     this->Proxy.Prolong(this->Base, this->BaseNodes, this->Nodes(this->LastMaps), this->LastMaps,
       this->FineIterate.Points, loop);
     this->Dragged = false;
+    settle.Continue = false; // a settle cut while it waited has no iterations to continue
   }
-  ArapOptions settle = options;
   settle.Extrapolate = false; // the handles are where the drag left them
   settle.Newton = true; // local-global iterations crawl at this size (ArapOptions::Newton)
   const ArapResult result = this->Fine.Solve(handleMaps, this->FineIterate, settle, loop);

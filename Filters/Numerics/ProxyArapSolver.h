@@ -4,7 +4,9 @@
 //
 //  - Set-up: the region's proxy (RegionProxy), its own ARAP system factored (small), and the
 //    full-resolution system with algebraic multigrid in place of a factor (AlgebraicMultigrid):
-//    seconds less than factoring a region of hundreds of thousands of vertices.
+//    seconds less than factoring a region of hundreds of thousands of vertices. The
+//    full-resolution system is built on a thread of its own while the user drags, which needs
+//    only the proxy; the settle waits for it.
 //  - Drag: the proxy iterates, with its bending scaled to the fine mesh's (ARAP's resistance
 //    to bending grows with the square of the edges' length; DeformationOptions::BendingLength),
 //    and its motion since the drag began moves the shape the drag began from, the details
@@ -19,6 +21,8 @@
 #include "AsRigidAsPossibleSolver.h"
 #include "RegionProxy.h"
 
+#include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,9 +31,16 @@ namespace LaplacianEditing
 class ProxyArapSolver
 {
 public:
-  /// Builds the proxy of about `nodes` nodes and both systems. Returns an error, empty on
-  /// success.
-  std::string Build(const SurfaceMesh& mesh, const EditRegion& region,
+  ProxyArapSolver() = default;
+  ProxyArapSolver(const ProxyArapSolver&) = delete;
+  ProxyArapSolver& operator=(const ProxyArapSolver&) = delete;
+  /// Waits for the full-resolution build, if it still runs.
+  ~ProxyArapSolver();
+
+  /// Builds the proxy of about `nodes` nodes and its system, and starts building the
+  /// full-resolution system on its own thread, serially (it holds `mesh` until done). Returns
+  /// an error, empty on success; the full-resolution build's is the settle's (GetSettleError).
+  std::string Build(std::shared_ptr<const SurfaceMesh> mesh, const EditRegion& region,
     const DeformationOptions& options, int nodes, const ParallelFor& loop = SerialFor);
 
   /// A drag step: the proxy iterates from its last state (at most options.MaximumIterations),
@@ -38,9 +49,14 @@ public:
     Positions& roiPositions, const ParallelFor& loop = SerialFor);
 
   /// Full-resolution iterations from the current shape (the last drag's, or the last
-  /// settle's), at most options.MaximumIterations.
+  /// settle's), at most options.MaximumIterations. Until the full-resolution system is built it
+  /// waits, calling options.Progress(0) every few milliseconds; where that returns false, or
+  /// the build failed, it leaves the dragged shape with no iteration.
   ArapResult Settle(const std::vector<AffineMap>& handleMaps, const ArapOptions& options,
     Positions& roiPositions, const ParallelFor& loop = SerialFor);
+
+  /// Why the full-resolution system could not be built, empty if it was or still builds.
+  const std::string& GetSettleError() const { return this->FineError; }
 
   /// Whether a drag came after the last settle.
   bool IsDragged() const { return this->Dragged; }
@@ -52,6 +68,8 @@ public:
 private:
   // The proxy's nodes as the coarse iterate and the handle maps have them.
   RegionProxy::NodeShape Nodes(const std::vector<AffineMap>& handleMaps) const;
+  // Waits for the full-resolution build (see Settle); whether the system is ready.
+  bool WaitForFine(const ArapOptions& options, const ParallelFor& loop);
 
   RegionProxy Proxy;
   AsRigidAsPossibleSolver Coarse;
@@ -62,7 +80,11 @@ private:
   Positions Base;
   RegionProxy::NodeShape BaseNodes;
   std::vector<AffineMap> LastMaps;
+  double DragEnergy = 0.0;
   bool Dragged = false;
+  std::string FineError;
+  // Declared last, so that it is joined before the members its build writes go.
+  std::future<std::string> FineBuild;
 };
 }
 

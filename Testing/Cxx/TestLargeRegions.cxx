@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -25,16 +26,20 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-// A bumpy 96 x 96 grid (9409 vertices): the strip x < 0.15 fixed, x > 0.85 the handle, the rest
-// the ROI, which a proxy of about 500 nodes stands for.
+// A bumpy 96 x 96 grid (9409 vertices) unless told: the strip x < 0.15 fixed, x > 0.85 the
+// handle, the rest the ROI, which a proxy of about 500 nodes stands for.
 struct StripEdit
 {
-  SurfaceMesh Mesh = MakeGrid(96, 96, 1.0,
-    [](double x, double y) { return 0.01 * std::sin(12.0 * Pi * x) * std::sin(12.0 * Pi * y); });
+  SurfaceMesh Mesh;
   EditRegion Region;
   DeformationOptions Options;
 
-  explicit StripEdit(bool bothEndsHandles = false)
+  // The mesh as ProxyArapSolver holds it while its full-resolution system builds.
+  std::shared_ptr<const SurfaceMesh> SharedMesh() const { return std::make_shared<const SurfaceMesh>(this->Mesh); }
+
+  explicit StripEdit(bool bothEndsHandles = false, int cells = 96)
+    : Mesh(MakeGrid(cells, cells, 1.0,
+        [](double x, double y) { return 0.01 * std::sin(12.0 * Pi * x) * std::sin(12.0 * Pi * y); }))
   {
     std::vector<int> labels(this->Mesh.GetNumberOfVertices());
     for (int v = 0; v < this->Mesh.GetNumberOfVertices(); ++v)
@@ -165,7 +170,7 @@ TEST(ProxyArap, NothingMovedReproducesTheRest)
   // Required: a drag and a settle with the handle at rest give the rest, to 1e-12 of the size.
   StripEdit edit;
   ProxyArapSolver solver;
-  ASSERT_EQ(solver.Build(edit.Mesh, edit.Region, edit.Options, 500), "");
+  ASSERT_EQ(solver.Build(edit.SharedMesh(), edit.Region, edit.Options, 500), "");
   const std::vector<AffineMap> rest = { AffineMap::Identity() };
   Positions dragged, settled;
   solver.Drag(rest, Iterations(4), dragged);
@@ -182,7 +187,7 @@ TEST(ProxyArap, RigidMotionsAreReproduced)
   // relieved bending is soft, 2000 iterations leave 4e-4.)
   StripEdit edit(true);
   ProxyArapSolver solver;
-  ASSERT_EQ(solver.Build(edit.Mesh, edit.Region, edit.Options, 500), "");
+  ASSERT_EQ(solver.Build(edit.SharedMesh(), edit.Region, edit.Options, 500), "");
   const RegionProxy& proxy = solver.GetProxy();
   const AffineMap rigid = RigidMotion();
   const std::vector<AffineMap> maps = { rigid, rigid };
@@ -219,7 +224,7 @@ TEST(ProxyArap, SettlesOnTheFactoredSolversShape)
   const ArapResult reference = factored.Solve(target, converged, Iterations(5000, 1e-12));
 
   ProxyArapSolver solver;
-  ASSERT_EQ(solver.Build(edit.Mesh, edit.Region, edit.Options, 500), "");
+  ASSERT_EQ(solver.Build(edit.SharedMesh(), edit.Region, edit.Options, 500), "");
   Positions shape;
   for (int step = 1; step <= 6; ++step)
   {
@@ -255,7 +260,7 @@ TEST(ProxyArap, ADragAfterASettleStartsFromTheSettledShape)
   // settled shape as the first drag's shape did.
   StripEdit edit;
   ProxyArapSolver solver;
-  ASSERT_EQ(solver.Build(edit.Mesh, edit.Region, edit.Options, 500), "");
+  ASSERT_EQ(solver.Build(edit.SharedMesh(), edit.Region, edit.Options, 500), "");
   ArapOptions drag = Iterations(5);
   drag.Dragging = true;
   Positions dragged, settled, again;
@@ -267,4 +272,54 @@ TEST(ProxyArap, ADragAfterASettleStartsFromTheSettledShape)
   const double next = (again - settled).cwiseAbs().maxCoeff();
   std::printf("from the settled shape: the first drag %.2e, the next %.2e\n", first, next);
   EXPECT_LT(next, 0.1 * first);
+}
+
+TEST(ProxyArap, ASettleStoppedAtOnceResumesToTheUncutSettlesShape)
+{
+  // A release stopped at its first report (an abort, a time limit or a new grab), then resumed.
+  // On a grid of 40k vertices the report comes while the full-resolution system still builds
+  // on its thread (its build takes about ten times the drag step), and on a fast machine after
+  // the first iteration. Required, either way: the stopped settle leaves a finite shape that
+  // meets the handle (1e-12), and the resumed one reaches the shape of a settle never stopped
+  // (1e-8).
+  StripEdit edit(false, 200);
+  const std::vector<AffineMap> maps = { Lift(0.2, 20.0) };
+  ArapOptions drag = Iterations(3);
+  drag.Dragging = true;
+
+  ProxyArapSolver uncut;
+  ASSERT_EQ(uncut.Build(edit.SharedMesh(), edit.Region, edit.Options, 500), "");
+  Positions reference;
+  uncut.Drag(maps, drag, reference);
+  uncut.Settle(maps, Iterations(30, 1e-12), reference);
+
+  ProxyArapSolver solver;
+  ASSERT_EQ(solver.Build(edit.SharedMesh(), edit.Region, edit.Options, 500), "");
+  Positions shape;
+  solver.Drag(maps, drag, shape);
+  ArapOptions stopped = Iterations(30, 1e-12);
+  double firstReport = -1.0;
+  stopped.Progress = [&](double done) {
+    firstReport = firstReport < 0.0 ? done : firstReport;
+    return false;
+  };
+  const ArapResult cut = solver.Settle(maps, stopped, shape);
+  EXPECT_EQ(solver.GetSettleError(), "");
+  EXPECT_LE(cut.Iterations, 1);
+  ASSERT_TRUE(shape.allFinite());
+  for (int k = 0; k < shape.rows(); ++k)
+  {
+    if (edit.Region.HandleGroups[k] >= 0)
+    {
+      const Vector3 rest = edit.Mesh.GetPositions()[edit.Region.Vertices[k]];
+      ASSERT_LT((shape.row(k).transpose() - (maps[0].leftCols<3>() * rest + maps[0].col(3))).norm(), 1e-12);
+    }
+  }
+  ArapOptions resumed = Iterations(30, 1e-12);
+  resumed.Continue = true;
+  solver.Settle(maps, resumed, shape);
+  const double miss = (shape - reference).cwiseAbs().maxCoeff();
+  std::printf("stopped %s (%d iterations); resumed %.2e from the uncut settle\n",
+    cut.Iterations == 0 ? "while the system built" : "after its first iteration", cut.Iterations, miss);
+  EXPECT_LT(miss, 1e-8);
 }
