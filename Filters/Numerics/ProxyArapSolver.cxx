@@ -2,12 +2,6 @@
 
 #include <chrono>
 
-#ifdef __linux__
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
-
 namespace LaplacianEditing
 {
 namespace
@@ -69,16 +63,11 @@ std::string ProxyArapSolver::Build(std::shared_ptr<const SurfaceMesh> mesh, cons
   this->Base = this->Proxy.GetRest();
   this->BaseNodes = this->Proxy.RestShape();
   // Why a thread: the full-resolution system is a third of a 610k region's set-up (1.1 of 2.9
-  // s), and only the settle needs it. Serial and at the lowest priority, so that the drag's own
-  // loops keep both cores: at normal priority its steps took 36-38 ms while the build ran, 22
-  // after (Documentation/performance.md, "Large regions").
+  // s), and only the settle needs it. Serial, to leave the drag a core. Not at a lower
+  // priority: Linux lets no unprivileged thread raise it again once the settle waits, and on
+  // a loaded machine the settle then waited on a starved build (Documentation/performance.md).
   this->FineBuild = std::async(std::launch::async,
-    [this, mesh, region, fine] {
-#ifdef __linux__
-      setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
-#endif
-      return this->Fine.Build(*mesh, region, fine, SerialFor);
-    });
+    [this, mesh, region, fine] { return this->Fine.Build(*mesh, region, fine, SerialFor); });
   return {};
 }
 

@@ -897,9 +897,11 @@ int ReleaseSettlesBetweenEvents()
   // A large region (its proxy dragged, its release settled by Newton's steps) whose filter's
   // SettleTimeLimit every step reaches: the release's update stops after one step, and the
   // widget continues the settle between the interactor's events, one step an update, until it
-  // ends. Required: the release leaves the filter settling; the event loop then runs more
-  // updates of one step each, and the settle ends with the filter no longer settling, within
-  // 1% of the converged energy (the factored filter's, run to convergence).
+  // ends. An update that comes while the full-resolution system still builds on its thread (on
+  // a loaded machine) takes no step: it waits at most one report interval. Required: the
+  // release leaves the filter settling; the event loop then runs more updates of at most one
+  // step each, at least two of them a step, and the settle ends with the filter no longer
+  // settling, within 1% of the converged energy (the factored filter's, run to convergence).
   Scene scene;
   vtkLaplacianDeformationFilter* filter = scene.Filter;
   filter->SetRotationModeToAsRigidAsPossible();
@@ -940,15 +942,18 @@ int ReleaseSettlesBetweenEvents()
   scene.Interactor->Start();
   filter->RemoveObserver(watch);
 
-  std::cout << "settle continued in " << iterations.size() << " updates\n";
-  Check(!filter->GetSettling(), "the settle ends");
-  Check(iterations.size() >= 2, "the event loop continues the settle");
   bool stepwise = true;
+  int stepped = 0;
   for (int count : iterations)
   {
-    stepwise = stepwise && count == 1;
+    stepwise = stepwise && (count == 0 || count == 1);
+    stepped += count;
   }
-  Check(stepwise, "one step an update");
+  std::cout << "settle continued in " << iterations.size() << " updates, " << stepped
+            << " of them a step\n";
+  Check(!filter->GetSettling(), "the settle ends");
+  Check(stepped >= 2, "the event loop continues the settle");
+  Check(stepwise, "at most one step an update");
 
   vtkNew<vtkLaplacianDeformationFilter> converged;
   converged->SetInputData(scene.Rest);
