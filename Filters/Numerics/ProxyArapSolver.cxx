@@ -23,22 +23,10 @@ constexpr int ProxyIterationsPerDragIteration = 2;
 constexpr std::chrono::milliseconds WaitReportInterval(20);
 }
 
-ProxyArapSolver::~ProxyArapSolver()
-{
-  if (this->FineBuild.valid())
-  {
-    this->FineBuild.wait();
-  }
-}
-
 std::string ProxyArapSolver::Build(std::shared_ptr<const SurfaceMesh> mesh, const EditRegion& region,
   const DeformationOptions& options, int nodes, const ParallelFor& loop)
 {
-  if (this->FineBuild.valid())
-  {
-    this->FineBuild.wait();
-  }
-  this->FineBuild = {};
+  this->FineBuild = {}; // waits for a build still running, as std::async's future does
   this->FineError.clear();
   this->CoarseIterate = ArapIterate();
   this->FineIterate = ArapIterate();

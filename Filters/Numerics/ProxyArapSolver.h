@@ -32,10 +32,9 @@ class ProxyArapSolver
 {
 public:
   ProxyArapSolver() = default;
+  // Not copied or moved: the full-resolution build writes this object's members.
   ProxyArapSolver(const ProxyArapSolver&) = delete;
   ProxyArapSolver& operator=(const ProxyArapSolver&) = delete;
-  /// Waits for the full-resolution build, if it still runs.
-  ~ProxyArapSolver();
 
   /// Builds the proxy of about `nodes` nodes and its system, and starts building the
   /// full-resolution system on its own thread, serially (it holds `mesh` until done). Returns
@@ -83,7 +82,8 @@ private:
   double DragEnergy = 0.0;
   bool Dragged = false;
   std::string FineError;
-  // Declared last, so that it is joined before the members its build writes go.
+  // std::async's: its destruction waits for the build. Declared last, so that it goes before
+  // the members the build writes.
   std::future<std::string> FineBuild;
 };
 }
