@@ -314,11 +314,11 @@ struct Measurement
   bool Refactored = false;
   vtkSmartPointer<vtkPolyData> Output;
   // As-rigid-as-possible mode: iterations per move (their median, and each move's), and the
-  // last move's energy over the energy converged at the same pose.
+  // last move's energy, absolute and over the energy converged at the same pose.
   double ARAPIterations = 0.0;
   std::vector<double> ARAPIterationsPerMove;
-  double ARAPEnergyRatio = 0.0;
-  // With --dragging: the update on release, its iterations and its energy over converged.
+  double DraggedEnergy = 0.0;
+  // With --dragging: the update on release, its iterations and its energy.
   int ReleaseIterations = 0;
   int ReleaseUpdates = 0;
   double LongestReleaseUpdate = 0.0;
@@ -344,9 +344,10 @@ struct Measurement
         json << (k ? ", " : "") << this->ARAPIterationsPerMove[k];
       }
       json << "]";
-      if (this->ARAPEnergyRatio > 0.0)
+      json << ", \"dragged_energy\": " << this->DraggedEnergy;
+      if (this->ConvergedEnergy > 0.0)
       {
-        json << ", \"arap_energy_over_converged\": " << this->ARAPEnergyRatio;
+        json << ", \"arap_energy_over_converged\": " << this->DraggedEnergy / this->ConvergedEnergy;
       }
       if (this->Release > 0.0)
       {
@@ -357,7 +358,11 @@ struct Measurement
       }
       if (this->ReleasedEnergy > 0.0)
       {
-        json << ", \"released_energy_over_converged\": " << this->ReleasedEnergy;
+        json << ", \"released_energy\": " << this->ReleasedEnergy;
+      }
+      if (this->ReleasedEnergy > 0.0 && this->ConvergedEnergy > 0.0)
+      {
+        json << ", \"released_energy_over_converged\": " << this->ReleasedEnergy / this->ConvergedEnergy;
       }
       if (this->ConvergedEnergy > 0.0)
       {
@@ -556,8 +561,8 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
       filter->Update();
       converged = energyOf(filter->GetOutput());
     }
-    result.ARAPEnergyRatio = converged > 0.0 ? dragged / converged : 0.0;
-    result.ReleasedEnergy = converged > 0.0 ? released / converged : 0.0;
+    result.DraggedEnergy = dragged;
+    result.ReleasedEnergy = released;
     result.ConvergedEnergy = converged;
   }
   result.Output = filter->GetOutput();
