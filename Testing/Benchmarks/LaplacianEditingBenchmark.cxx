@@ -5,7 +5,7 @@
 //     [--weights uniform|cotangent] [--solver cholmod|ldlt] [--ordering auto|amd|metis|nesdis]
 //     [--mode none|explicit|implicit|arap] [--iterations K] [--arap-iterations K] [--linear]
 //     [--no-extrapolation] [--absolute] [--large-region N] [--proxy-nodes N]
-//     [--drag-iterations K] [--settle-time-limit S]
+//     [--drag-iterations K] [--settle-time-limit S] [--write DIR]
 //     [--compare-cgal]
 //
 // --sphere N generates a UV sphere of about N vertices instead of reading a mesh (for the
@@ -46,6 +46,7 @@
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
 #include "vtkTriangleFilter.h"
+#include "vtkXMLPolyDataWriter.h"
 
 #ifdef LAPLACIAN_EDITING_HAS_CGAL
 #include "CGALSurface.h"
@@ -169,6 +170,7 @@ struct Options
   int ProxyNodes = -1;
   int DragIterations = -1;
   double SettleTimeLimit = 0.0;
+  std::string WriteDirectory;
   bool Help = false;
 };
 
@@ -204,6 +206,9 @@ vertices or of a flat grid of about N points (unit spacing, handle at its centre
   --settle-time-limit S   with --dragging, the release with SettleTimeLimit S, continued update
                           by update (ContinueSettling) as the widget does; also its updates and
                           the longest of them
+  --write DIR             the filter's output at rest, at the drag's end, released and converged
+                          (rest.vtp, dragged.vtp, released.vtp, converged.vtp) in DIR, to
+                          compare shapes where the energies differ
   --compare-cgal          the same edit in CGAL 5.5's Surface_mesh_deformation
   --help                  this text
 )";
@@ -278,6 +283,8 @@ bool Parse(int argc, char* argv[], Options& options)
       options.ConvergedIterations = std::atoi(next().c_str());
     else if (arg == "--large-region")
       options.LargeRegion = std::atoi(next().c_str());
+    else if (arg == "--write")
+      options.WriteDirectory = next();
     else if (arg == "--proxy-nodes")
       options.ProxyNodes = std::atoi(next().c_str());
     else if (arg == "--drag-iterations")
@@ -495,6 +502,16 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
   vtkNew<vtkTransform> transform;
   filter->SetHandleTransform(transform);
   filter->Update();
+  auto writeShape = [&](const char* name) {
+    if (!options.WriteDirectory.empty())
+    {
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputData(filter->GetOutput());
+      writer->SetFileName((options.WriteDirectory + "/" + name + ".vtp").c_str());
+      writer->Write();
+    }
+  };
+  writeShape("rest");
 
   Measurement result;
   result.ROIVertices = filter->GetNumberOfROIVertices();
@@ -530,6 +547,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
     // The drag's last energy against the optimum at that pose (the drag's result, iterated on),
     // each measured on the output.
     const double dragged = energyOf(filter->GetOutput());
+    writeShape("dragged");
     double released = 0.0;
     if (options.Dragging)
     {
@@ -549,6 +567,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
       } while (filter->GetSettling());
       result.Release = SecondsSince(start);
       released = energyOf(filter->GetOutput());
+      writeShape("released");
       filter->SetSettleTimeLimit(0.0);
     }
     result.ARAPIterations = Median(arapIterations);
@@ -560,6 +579,7 @@ Measurement Measure(vtkPolyData* mesh, const double center[3], const Options& op
       filter->SetConvergence(1e-8);
       filter->Update();
       converged = energyOf(filter->GetOutput());
+      writeShape("converged");
     }
     result.DraggedEnergy = dragged;
     result.ReleasedEnergy = released;
