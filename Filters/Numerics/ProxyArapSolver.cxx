@@ -1,5 +1,6 @@
 #include "ProxyArapSolver.h"
 
+#include <algorithm>
 #include <chrono>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -31,9 +32,6 @@ std::string ProxyArapSolver::Build(std::shared_ptr<const SurfaceMesh> mesh, cons
 {
   this->FineBuild = {}; // waits for a build still running, as std::async's future does
   this->FineError.clear();
-  this->CoarseIterate = ArapIterate();
-  this->FineIterate = ArapIterate();
-  this->Dragged = false;
   std::string error = this->Proxy.Build(*mesh, region, nodes, loop);
   if (!error.empty())
   {
@@ -51,8 +49,7 @@ std::string ProxyArapSolver::Build(std::shared_ptr<const SurfaceMesh> mesh, cons
   DeformationOptions fine = options;
   fine.Backend = SolverBackend::Multigrid;
   this->Fine.SetSolveTolerance(SettleTolerance);
-  this->Base = this->Proxy.GetRest();
-  this->BaseNodes = this->Proxy.RestShape();
+  this->ResetToRest();
   // Why a thread: the full-resolution system is a third of a 610k region's set-up (1.1 of 2.9
   // s), and only the settle needs it. Serial, to leave the drag a core. Not at a lower
   // priority: Linux lets no unprivileged thread raise it again once the settle waits, and on
@@ -68,6 +65,16 @@ std::string ProxyArapSolver::Build(std::shared_ptr<const SurfaceMesh> mesh, cons
     return built;
   });
   return {};
+}
+
+void ProxyArapSolver::ResetToRest()
+{
+  this->CoarseIterate = ArapIterate();
+  this->FineIterate = ArapIterate();
+  this->Base = this->Proxy.GetRest();
+  this->BaseNodes = this->Proxy.RestShape();
+  this->LastMaps.clear();
+  this->Dragged = false;
 }
 
 bool ProxyArapSolver::WaitForFine(const ArapOptions& options, const ParallelFor& loop)
@@ -143,6 +150,18 @@ ArapResult ProxyArapSolver::Drag(const std::vector<AffineMap>& handleMaps,
 ArapResult ProxyArapSolver::Settle(const std::vector<AffineMap>& handleMaps,
   const ArapOptions& options, Positions& roiPositions, const ParallelFor& loop)
 {
+  if (std::all_of(handleMaps.begin(), handleMaps.end(),
+        [](const AffineMap& map) { return map == AffineMap::Identity(); }))
+  {
+    // Handles at rest: the rest is the minimum, exactly (energy 0), where iterations would
+    // chase the rounding of the proxy's solve, and a 610k region's first update waited 10 s
+    // for them (Documentation/performance.md).
+    this->ResetToRest();
+    roiPositions = this->Proxy.GetRest();
+    ArapResult rest;
+    rest.Converged = true;
+    return rest;
+  }
   // The proxy's solve at these handles, where no drag reached them.
   ArapOptions proxy = options;
   proxy.Extrapolate = false;

@@ -48,7 +48,8 @@ public:
     Positions& roiPositions, const ParallelFor& loop = SerialFor);
 
   /// Full-resolution iterations from the current shape (the last drag's, or the last
-  /// settle's), at most options.MaximumIterations. Until the full-resolution system is built it
+  /// settle's), at most options.MaximumIterations; with every handle map the identity, the
+  /// rest itself, at once. Until the full-resolution system is built it
   /// waits, calling options.Progress(0) every few milliseconds; where that returns false, or
   /// the build failed, it leaves the dragged shape with no iteration.
   ArapResult Settle(const std::vector<AffineMap>& handleMaps, const ArapOptions& options,
@@ -67,6 +68,8 @@ public:
 private:
   // The proxy's nodes as the coarse iterate and the handle maps have them.
   RegionProxy::NodeShape Nodes(const std::vector<AffineMap>& handleMaps) const;
+  // Back to the state a new region starts from: the rest, no drag, no settle.
+  void ResetToRest();
   // Waits for the full-resolution build (see Settle); whether the system is ready.
   bool WaitForFine(const ArapOptions& options, const ParallelFor& loop);
 
