@@ -571,6 +571,18 @@ std::string InjectiveDeformation::FactorAt(double weight, InjectiveReport& repor
   return error;
 }
 
+std::string InjectiveDeformation::FactorForDrag(int& factorizations)
+{
+  if (this->FactoredWeight > 0.0)
+  {
+    return {};
+  }
+  InjectiveReport report;
+  const std::string error = this->FactorAt(this->FinalWeight, report);
+  factorizations += report.Factorizations;
+  return error;
+}
+
 void InjectiveDeformation::Reweight(const Positions& x, const ParallelFor& loop)
 {
   const int m = static_cast<int>(this->Tets.rows());
@@ -763,6 +775,37 @@ double InjectiveDeformation::LargestSafeStep(const Positions& points,
     smallest = std::min(smallest, s);
   }
   return smallest;
+}
+
+std::vector<int> InjectiveDeformation::Inverted(
+  const Positions& points, const Tetrahedra& tetrahedra, const ParallelFor& loop)
+{
+  const Rows x = points;
+  const int m = static_cast<int>(tetrahedra.rows());
+  std::vector<std::vector<int>> inverted(GradientBlocks);
+  loop(0, GradientBlocks, [&](int firstBlock, int lastBlock) {
+    for (int block = firstBlock; block < lastBlock; ++block)
+    {
+      for (int c = FirstOfBlock(m, block); c < FirstOfBlock(m, block + 1); ++c)
+      {
+        Edges3 d;
+        LoadEdges(x.data(), tetrahedra.data() + 4 * c, d);
+        const double det = d[0][0] * (d[1][1] * d[2][2] - d[2][1] * d[1][2]) -
+          d[0][1] * (d[1][0] * d[2][2] - d[2][0] * d[1][2]) +
+          d[0][2] * (d[1][0] * d[2][1] - d[2][0] * d[1][1]);
+        if (!(det > 0.0))
+        {
+          inverted[block].push_back(c);
+        }
+      }
+    }
+  });
+  std::vector<int> all;
+  for (const std::vector<int>& block : inverted)
+  {
+    all.insert(all.end(), block.begin(), block.end());
+  }
+  return all;
 }
 
 bool InjectiveDeformation::AllPositive(const Positions& x, const std::vector<int>& tets) const

@@ -93,6 +93,11 @@ public:
     const std::vector<PointKind>& kinds, double targetWeight = 1e4,
     SolverBackend backend = SolverBackend::Cholmod);
 
+  /// Factors the proxy, unless it is factored: at the weight given to Prepare, as a solve without
+  /// a continuation (a drag step, a release from a drag's end) uses it; adds the factorizations
+  /// to `factorizations`. Returns an error, empty on success.
+  std::string FactorForDrag(int& factorizations);
+
   /// Moves the free and targeted rows of `points` (a start without inverted tetrahedra: the rest
   /// or an earlier result) towards `targets` (rows of the targeted points are read). Fixed rows
   /// are never written. Targeted points that end within `snap` of their targets are put exactly
@@ -102,6 +107,10 @@ public:
 
   /// Distance of each targeted point from its target after the last Solve (0 for the others).
   const std::vector<double>& GetMisses() const { return this->Misses; }
+
+  /// The rows of the tetrahedra not of positive volume at `points`, in order.
+  static std::vector<int> Inverted(const Positions& points, const Tetrahedra& tetrahedra,
+    const ParallelFor& loop = SerialFor);
 
   /// det(b - a, c - a, d - a) / (|b - a| |c - a| |d - a|): 1 for a right corner, 0 flat,
   /// negative inverted.

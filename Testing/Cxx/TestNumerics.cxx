@@ -2,6 +2,7 @@
 #include "NumericsTestMeshes.h"
 
 #include "CoincidentPoints.h"
+#include "DeformationGraph.h"
 #include "DeformationSystem.h"
 #include "DistributedSolver.h"
 #include "EditRegion.h"
@@ -908,4 +909,155 @@ TEST(SmoothWarp, FarthestPointsSpreadOverThePoints)
   EXPECT_EQ(SmoothWarp::FarthestPoints(points.topRows(10), 30).size(), 10u) << "all, where few";
   const std::vector<int> fewer = SmoothWarp::FarthestPoints(points, 12);
   EXPECT_TRUE(std::equal(fewer.begin(), fewer.end(), chosen.begin())) << "a prefix of more";
+}
+
+namespace
+{
+// A block of n^3 unit cubes, six positive tetrahedra each (around the cube's diagonal); the
+// block's surface points targeted, the others free.
+struct TetBlock
+{
+  Positions Rest;
+  Tetrahedra Tets;
+  std::vector<PointKind> Kinds;
+};
+
+TetBlock Block(int n)
+{
+  TetBlock block;
+  const int side = n + 1;
+  auto id = [side](int i, int j, int k) { return i + side * (j + side * k); };
+  block.Rest.resize(side * side * side, 3);
+  block.Kinds.assign(side * side * side, PointKind::Free);
+  for (int k = 0; k < side; ++k)
+  {
+    for (int j = 0; j < side; ++j)
+    {
+      for (int i = 0; i < side; ++i)
+      {
+        block.Rest.row(id(i, j, k)) << i, j, k;
+        const bool surface = i == 0 || j == 0 || k == 0 || i == n || j == n || k == n;
+        block.Kinds[id(i, j, k)] = surface ? PointKind::Targeted : PointKind::Free;
+      }
+    }
+  }
+  std::vector<std::array<int, 4>> tets;
+  const int paths[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        for (const auto& path : paths)
+        {
+          // From corner (0,0,0) to (1,1,1), one axis at a time.
+          int c[3] = { i, j, k };
+          std::array<int, 4> tet;
+          tet[0] = id(c[0], c[1], c[2]);
+          for (int step = 0; step < 3; ++step)
+          {
+            ++c[path[step]];
+            tet[step + 1] = id(c[0], c[1], c[2]);
+          }
+          Eigen::Matrix3d d;
+          for (int e = 0; e < 3; ++e)
+          {
+            d.col(e) = (block.Rest.row(tet[e + 1]) - block.Rest.row(tet[0])).transpose();
+          }
+          if (d.determinant() < 0.0)
+          {
+            std::swap(tet[2], tet[3]);
+          }
+          tets.push_back(tet);
+        }
+      }
+    }
+  }
+  block.Tets.resize(static_cast<Eigen::Index>(tets.size()), 4);
+  for (std::size_t t = 0; t < tets.size(); ++t)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      block.Tets(static_cast<Eigen::Index>(t), c) = tets[t][c];
+    }
+  }
+  return block;
+}
+}
+
+// The volume drag's coarse stand-in reproduces what its weights promise: the rest, and a rigid
+// motion of every constrained point, whose local-global iterations it reaches from rest.
+TEST(DeformationGraph, ReproducesTheRestAndARigidMotion)
+{
+  const TetBlock block = Block(6);
+  DeformationGraph graph;
+  ASSERT_EQ(graph.Build(block.Rest, block.Tets, block.Kinds, 40), "");
+  EXPECT_GT(graph.GetNumberOfNodes(), 20);
+  EXPECT_LT(graph.GetNumberOfNodes(), 80);
+  Positions points = block.Rest;
+  graph.Solve(block.Rest, points, 4);
+  EXPECT_LT((points - block.Rest).cwiseAbs().maxCoeff(), 1e-12);
+
+  const Eigen::Matrix3d turn =
+    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d shift(0.5, -2.0, 1.0);
+  const Positions moved = (block.Rest * turn.transpose()).rowwise() + shift;
+  graph.Solve(moved, points, 60);
+  EXPECT_LT((points - moved).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_TRUE(InjectiveDeformation::Inverted(points, block.Tets).empty());
+
+  graph.ResetToRest();
+  graph.Solve(block.Rest, points, 1);
+  EXPECT_LT((points - block.Rest).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// A drag of the block's top by a few degrees a step: each step's shape is smooth, inverts no
+// tetrahedron, and puts the targeted points on their targets.
+TEST(DeformationGraph, FollowsATurnStepByStep)
+{
+  TetBlock block = Block(8);
+  // The bottom stays; the top turns about the x axis through the top's centre; the sides are free.
+  for (int p = 0; p < block.Rest.rows(); ++p)
+  {
+    const double z = block.Rest(p, 2);
+    if (block.Kinds[p] == PointKind::Targeted && z > 0.0 && z < 8.0)
+    {
+      block.Kinds[p] = PointKind::Free;
+    }
+    if (z == 0.0)
+    {
+      block.Kinds[p] = PointKind::Fixed;
+    }
+  }
+  DeformationGraph graph;
+  ASSERT_EQ(graph.Build(block.Rest, block.Tets, block.Kinds, 60), "");
+  Positions points = block.Rest;
+  const Eigen::RowVector3d centre(4.0, 4.0, 8.0);
+  for (int step = 1; step <= 6; ++step)
+  {
+    const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(step * 5.0 * 3.14159265358979 / 180.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    Positions targets = block.Rest;
+    for (int p = 0; p < block.Rest.rows(); ++p)
+    {
+      if (block.Kinds[p] == PointKind::Targeted)
+      {
+        targets.row(p) = (block.Rest.row(p) - centre) * turn.transpose() + centre;
+      }
+    }
+    graph.Solve(targets, points, 4);
+    EXPECT_TRUE(InjectiveDeformation::Inverted(points, block.Tets).empty()) << "step " << step;
+    for (int p = 0; p < block.Rest.rows(); ++p)
+    {
+      if (block.Kinds[p] == PointKind::Targeted)
+      {
+        EXPECT_EQ(points.row(p), targets.row(p));
+      }
+      if (block.Kinds[p] == PointKind::Fixed)
+      {
+        EXPECT_EQ(points.row(p), block.Rest.row(p));
+      }
+    }
+  }
 }
