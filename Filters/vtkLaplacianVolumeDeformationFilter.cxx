@@ -197,6 +197,7 @@ bool vtkLaplacianVolumeDeformationFilter::Edit(vtkUnstructuredGrid* input, vtkUn
   lep::VolumeFollower::Settings settings;
   settings.Iterations = this->VolumeIterations;
   settings.DragIterations = this->DragVolumeIterations;
+  settings.Graph = this->DragGraph != 0;
   // A boundary whose settle the time limit cut is followed as a drag step follows it; the
   // interior settles once the boundary has, within what is left of the limit.
   const bool boundarySettling = surface->GetSettling() != 0;
@@ -459,6 +460,15 @@ int vtkLaplacianVolumeDeformationFilter::GetNumberOfFailedCells()
 {
   return this->Internals->Follower.GetFacts().FailedCells;
 }
+int vtkLaplacianVolumeDeformationFilter::GetNumberOfGraphNodes()
+{
+  const auto& facts = this->Internals->Follower.GetFacts();
+  return facts.ByGraph ? facts.GraphNodes : 0;
+}
+int vtkLaplacianVolumeDeformationFilter::GetNumberOfRepairedCells()
+{
+  return this->Internals->Follower.GetFacts().RepairedCells;
+}
 double vtkLaplacianVolumeDeformationFilter::GetLargestTargetMiss()
 {
   return this->Internals->Follower.GetFacts().LargestMiss;
@@ -477,6 +487,7 @@ void vtkLaplacianVolumeDeformationFilter::PrintSelf(ostream& os, vtkIndent inden
   this->Superclass::PrintSelf(os, indent);
   os << indent << "VolumeIterations: " << this->VolumeIterations << "\n";
   os << indent << "DragVolumeIterations: " << this->DragVolumeIterations << "\n";
+  os << indent << "DragGraph: " << (this->DragGraph ? "On" : "Off") << "\n";
   os << indent << "NumberOfCommits: " << this->GetNumberOfCommits() << "\n";
   os << indent << "OutputDisplacement: " << (this->OutputDisplacement ? "On" : "Off") << "\n";
   os << indent << "SettleTimeLimit: " << this->SettleTimeLimit << " s\n";

@@ -21,8 +21,9 @@
  * error and passes the input through.
  *
  * Interaction: the handle widget pairs with GetSurfaceFilter(). While Dragging is on, each update
- * runs DragVolumeIterations from the last result on the factors of the region; the update after
- * the drag iterates to convergence (at most VolumeIterations). Progress: the boundary's edit in
+ * moves the interior with a coarse deformation graph of the zone (DragGraph), at the cost of its
+ * few hundred nodes, and repairs the few cells that this would invert; the update after the drag
+ * iterates to convergence (at most VolumeIterations). Progress: the boundary's edit in
  * (0.1, 0.4), its settle's iterations last; the interior's iterations in (0.4, 0.9). An abort
  * (AbortExecuteOn, from a progress observer when a new grab starts) ends either settle at that
  * iterate, every cell still positive; the next release settles in full.
@@ -156,7 +157,18 @@ public:
   vtkSetClampMacro(VolumeIterations, int, 1, 100000);
   vtkGetMacro(VolumeIterations, int);
   /**
-   * Iterations of an update while Dragging. Default 1: a drag step's first iteration carries
+   * Drag steps follow the zone's deformation graph (default on): an embedded deformation
+   * (Sumner et al. 2007) of a node per 40 zone points, as rigid as possible, whose motion since
+   * the last update moves the interior; the cells it would invert are repaired by a small
+   * injective solve around them, and the boundary meets its edit. Its cost follows the nodes
+   * and the zone's points, not its factor (Documentation/volumes.md). Off, or where the repair
+   * fails, a drag step runs DragVolumeIterations of the interior's solve.
+   */
+  vtkSetMacro(DragGraph, vtkTypeBool);
+  vtkGetMacro(DragGraph, vtkTypeBool);
+  vtkBooleanMacro(DragGraph, vtkTypeBool);
+  /**
+   * Iterations of a drag step that the graph does not take. Default 1: an iteration carries
    * the boundary's motion into the interior (the harmonic extension of its increment, cut short
    * of any flattening cell); the update after the drag iterates to convergence.
    */
@@ -184,6 +196,10 @@ public:
   int GetNumberOfVolumeIterations();
   int GetNumberOfVolumeFactorizations();
   int GetNumberOfZoneGrowths();
+  /** The nodes of the deformation graph that the last drag step followed (0: it did not), and
+   * the cells it repaired. */
+  int GetNumberOfGraphNodes();
+  int GetNumberOfRepairedCells();
   /** Cells marked in EditFailed. */
   int GetNumberOfFailedCells();
   /** The largest distance of a boundary point from its edited position. */
@@ -204,6 +220,7 @@ protected:
 
   int VolumeIterations = 300;
   int DragVolumeIterations = 1;
+  vtkTypeBool DragGraph = 1;
   vtkTypeBool OutputDisplacement = 0;
   double SettleTimeLimit = 0.0;
 

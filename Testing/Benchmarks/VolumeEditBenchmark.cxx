@@ -5,7 +5,7 @@
 //
 //   VolumeEditBenchmark DATA_DIR [--meshes spot:90,homer:60] [--switches pq1.4a0.0005]
 //     [--cache DIR] [--roi 0.3] [--handle 0.03] [--lift 0.1] [--drags 10]
-//     [--drag-iterations K] [--settle-limit S] [--write DIR] [--meshes-only]
+//     [--drag-iterations K] [--no-drag-graph] [--settle-limit S] [--write DIR] [--meshes-only]
 //
 // The edit (one per mesh, NAME:DEGREES): the handle on the boundary point farthest from the
 // centroid, radius --handle and region --roi of the diagonal, as-rigid-as-possible; it turns by
@@ -13,12 +13,14 @@
 // the diagonal the way it turns. Every method gets the same boundary motion, the surface filter's.
 // Inverted cells and the smallest scaled Jacobian are vtkMeshQuality's (Verdict). The filter's
 // settled update reports its zone, iterations and seconds; then --drags steps of a drag to the same
-// pose (Dragging on, factors reused): the median seconds a step of the volume filter (and its
-// longest after the first, which prepares the zone), and of the surface filter alone on the
-// boundary surface, and the largest distance of a boundary point from its edited position in any
+// pose (Dragging on, factors reused): the median seconds a step of the volume filter (its first,
+// which prepares the zone and its graph, and its longest after the first), and of the surface
+// filter alone on the boundary surface; the steps the deformation graph took and the cells it
+// repaired; the largest distance of a boundary point from its edited position in any
 // step, and the drag's lag: the largest distance of a point at the drag's end from the settled
 // volume of its release, and the release's boundary from the settled update's (as shares of the
-// diagonal; --drag-iterations sets the filter's DragVolumeIterations; --settle-limit gives the
+// diagonal; --drag-iterations sets the filter's DragVolumeIterations, --no-drag-graph turns its
+// DragGraph off (drag steps by the injective iteration alone); --settle-limit gives the
 // release a SettleTimeLimit of S seconds and continues it update by update, as the ParaView
 // panel does, reporting the updates and the longest), and the process's peak memory (of the whole
 // run, every method's). --write saves the rest, settled and released meshes as .vtu for a look in
@@ -66,6 +68,7 @@ struct Options
   double Lift = 0.1;
   int Drags = 10;
   int DragIterations = 0; // 0: the filter's default
+  bool DragGraph = true;
   double SettleLimit = 0.0; // 0: the release settles in one update
   bool MeshesOnly = false;
 };
@@ -291,13 +294,14 @@ void Run(const std::string& name, double degrees, const Options& options)
     {
       dragged->SetDragVolumeIterations(options.DragIterations);
     }
+    dragged->SetDragGraph(options.DragGraph);
     vtkNew<vtkLaplacianDeformationFilter> alone;
     vtkNew<vtkPolyData> boundary;
     boundary->DeepCopy(boundaryFilter->GetOutput());
     alone->SetInputData(boundary);
     Configure(alone, edit, options);
     std::vector<double> volumeSteps, surfaceSteps;
-    int iterations = 0;
+    int iterations = 0, graphSteps = 0, repairedCells = 0;
     double dragMiss = 0.0;
     double dragLag = 0.0; // the drag's end from the release's settled volume, largest
     double release = 0.0;  // the volume's release update, boundary and interior
@@ -317,6 +321,8 @@ void Run(const std::string& name, double degrees, const Options& options)
         filter->Update();
         (isVolume ? volumeSteps : surfaceSteps).push_back(stepWatch.Seconds());
         iterations += isVolume ? dragged->GetNumberOfVolumeIterations() : 0;
+        graphSteps += isVolume && dragged->GetNumberOfGraphNodes() > 0;
+        repairedCells += isVolume ? dragged->GetNumberOfRepairedCells() : 0;
         dragMiss = std::max(dragMiss, isVolume ? dragged->GetLargestTargetMiss() : 0.0);
       }
       vtkNew<vtkPoints> dragEnd; // the volume's points at the drag's end
@@ -356,6 +362,7 @@ void Run(const std::string& name, double degrees, const Options& options)
     }
     std::ostringstream dragFacts;
     dragFacts << ", \"volume_step\": " << Median(volumeSteps)
+              << ", \"volume_first_step\": " << volumeSteps.front()
               << ", \"volume_steps_after_first_max\": "
               << *std::max_element(volumeSteps.begin() + (volumeSteps.size() > 1), volumeSteps.end())
               << ", \"surface_step\": " << Median(surfaceSteps)
@@ -366,6 +373,8 @@ void Run(const std::string& name, double degrees, const Options& options)
               << *std::min_element(surfaceSteps.begin(), surfaceSteps.end())
               << ", \"volume_iterations_per_step\": "
               << static_cast<double>(iterations) / options.Drags
+              << ", \"volume_graph_steps\": " << graphSteps
+              << ", \"volume_repaired_cells\": " << repairedCells
               << ", \"largest_drag_miss\": " << dragMiss / rest->GetLength()
               << ", \"drag_lag\": " << dragLag / rest->GetLength()
               << ", \"release_boundary_from_rest\": " << boundaryApart / rest->GetLength()
@@ -393,7 +402,7 @@ int main(int argc, char* argv[])
     {
       std::cout << "VolumeEditBenchmark DATA_DIR [--meshes spot:90,homer:60] [--switches "
                    "pq1.4a0.0005] [--cache DIR] [--roi 0.3] [--handle 0.03] [--lift 0.1] "
-                   "[--drags 10] [--drag-iterations K] [--settle-limit S] [--write DIR] [--meshes-only]\n";
+                   "[--drags 10] [--drag-iterations K] [--no-drag-graph] [--settle-limit S] [--write DIR] [--meshes-only]\n";
       return 0;
     }
     else if (arg == "--meshes")
@@ -416,6 +425,8 @@ int main(int argc, char* argv[])
       options.MeshesOnly = true;
     else if (arg == "--drag-iterations")
       options.DragIterations = std::stoi(next());
+    else if (arg == "--no-drag-graph")
+      options.DragGraph = false;
     else if (arg == "--settle-limit")
       options.SettleLimit = std::stod(next());
     else if (options.Data.empty())

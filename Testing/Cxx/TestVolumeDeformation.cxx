@@ -263,6 +263,23 @@ class TetgenBend : public ::testing::TestWithParam<std::tuple<std::string, doubl
 {
 };
 
+namespace
+{
+// The edits: the handle on the boundary point farthest from the centroid (radius 0.03
+// of the diagonal), region 0.3, as rigid as possible.
+vtkSmartPointer<Filter> TetgenEdit(vtkUnstructuredGrid* mesh, const VolumeMeshes::Edit& edit)
+{
+  vtkNew<Filter> filter;
+  filter->SetInputData(mesh);
+  filter->SetRadiusUnitsToDiagonalFraction();
+  filter->SetHandleCenter(edit.Center);
+  filter->SetHandleRadius(0.03);
+  filter->SetROIRadius(0.3);
+  filter->SetRotationModeToAsRigidAsPossible();
+  return filter;
+}
+}
+
 TEST_P(TetgenBend, NoInvertedCellAndTheBoundaryMet)
 {
   // The edits: the handle on the boundary point farthest from the centroid (radius
@@ -272,13 +289,7 @@ TEST_P(TetgenBend, NoInvertedCellAndTheBoundaryMet)
   vtkSmartPointer<vtkUnstructuredGrid> mesh = TetgenMesh(name);
   ASSERT_TRUE(mesh);
   const VolumeMeshes::Edit edit = VolumeMeshes::FarEdit(mesh, degrees, 0.1);
-  vtkNew<Filter> filter;
-  filter->SetInputData(mesh);
-  filter->SetRadiusUnitsToDiagonalFraction();
-  filter->SetHandleCenter(edit.Center);
-  filter->SetHandleRadius(0.03);
-  filter->SetROIRadius(0.3);
-  filter->SetRotationModeToAsRigidAsPossible();
+  vtkSmartPointer<Filter> filter = TetgenEdit(mesh, edit);
   filter->SetHandleTransform(edit.At(1.0));
   filter->Update();
   vtkUnstructuredGrid* output = filter->GetOutput();
@@ -306,6 +317,69 @@ TEST_P(TetgenBend, NoInvertedCellAndTheBoundaryMet)
   const double radius =
     mesh->GetLength() * 0.3 * (1.0 + std::pow(2.0, filter->GetNumberOfZoneGrowths()));
   EXPECT_GT(ExpectFarPointsUntouched(mesh, output, edit.Center, radius), 0);
+}
+
+// The same edits dragged in ten steps: the deformation graph takes every step (its repairs
+// included), no cell inverts, the boundary is the surface's edit at every step, and the drag's
+// end lies about as near the settled volume as the injective iteration's drag (measured: 0.0028
+// and 0.0025 of the diagonal on spot, 0.0013 and 0.0047 on homer, on average).
+TEST_P(TetgenBend, DraggedByTheGraphNoCellInvertsAndTheInteriorLagsLittle)
+{
+  const auto [name, degrees] = GetParam();
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = TetgenMesh(name);
+  ASSERT_TRUE(mesh);
+  const VolumeMeshes::Edit edit = VolumeMeshes::FarEdit(mesh, degrees, 0.1);
+  auto lag = [&](bool graph) {
+    vtkSmartPointer<Filter> filter = TetgenEdit(mesh, edit);
+    filter->SetDragGraph(graph);
+    filter->DraggingOn();
+    constexpr int Steps = 10;
+    int byGraph = 0;
+    for (int step = 1; step <= Steps; ++step)
+    {
+      filter->SetHandleTransform(edit.At(step / double(Steps)));
+      filter->Update();
+      const VolumeMeshes::Validity validity = VolumeMeshes::Measure(filter->GetOutput());
+      EXPECT_EQ(validity.Inverted, 0) << "step " << step;
+      EXPECT_LT(validity.LargestReportedQualityError, 1e-6) << "step " << step;
+      byGraph += filter->GetNumberOfGraphNodes() > 0;
+      if (graph)
+      {
+        EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0) << "step " << step;
+      }
+    }
+    EXPECT_EQ(byGraph, graph ? Steps : 0);
+    vtkNew<vtkUnstructuredGrid> dragged;
+    dragged->DeepCopy(filter->GetOutput());
+    filter->DraggingOff();
+    filter->Update();
+    EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0);
+    EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0);
+    // The mean distance of the points the release moved from their place at the drag's end
+    // (the largest is the boundary's: the surface's release goes on from its drag's end).
+    double sum = 0.0;
+    int moved = 0;
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3], r[3];
+      dragged->GetPoint(i, a);
+      filter->GetOutput()->GetPoint(i, b);
+      mesh->GetPoint(i, r);
+      if (Distance(b, r) > 0.0)
+      {
+        sum += Distance(a, b);
+        ++moved;
+      }
+    }
+    return sum / std::max(1, moved) / mesh->GetLength();
+  };
+  const double byGraph = lag(true);
+  const double byIterations = lag(false);
+  std::printf("%s dragged %.0f degrees in ten steps: the drag's end %.4f of the diagonal from the "
+              "settled volume by the graph, %.4f by the injective iteration\n",
+    name.c_str(), degrees, byGraph, byIterations);
+  EXPECT_LT(byGraph, 1.25 * byIterations);
+  EXPECT_LT(byGraph, 0.005);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, TetgenBend,
@@ -359,9 +433,16 @@ TEST(VolumeDeformation, DragReusesTheZoneAndTheReleaseSettles)
   {
     filter->SetHandleTransform(Turn(filter->GetHandleCenter(), -5.0 * step, lift));
     filter->Update();
-    EXPECT_EQ(filter->GetVolumeSetupTime(), 0.0) << "step " << step;
+    // The first drag step builds the zone's deformation graph; the others reuse it.
+    if (step > 2)
+    {
+      EXPECT_EQ(filter->GetVolumeSetupTime(), 0.0) << "step " << step;
+    }
     EXPECT_EQ(filter->GetNumberOfVolumeFactorizations(), 0) << "step " << step;
-    EXPECT_LE(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
+    // The graph takes the step: no iteration of the interior's solve, the boundary met.
+    EXPECT_GT(filter->GetNumberOfGraphNodes(), 0) << "step " << step;
+    EXPECT_EQ(filter->GetNumberOfVolumeIterations(), 0) << "step " << step;
+    EXPECT_EQ(filter->GetLargestTargetMiss(), 0.0) << "step " << step;
     const VolumeMeshes::Validity validity = VolumeMeshes::Measure(filter->GetOutput());
     EXPECT_EQ(validity.Inverted, 0);
     // A drag step's ScaledJacobian (the batched pass): Verdict's, to the float it is stored in.
@@ -540,8 +621,9 @@ SplitSettle SettleSplitByATimeLimit(bool rigid, bool fromDrag = true)
     EXPECT_EQ(VolumeMeshes::Measure(filter->GetOutput()).Inverted, 0) << "update " << split.Updates;
     if (filter->GetSurfaceFilter()->GetSettling())
     {
-      ++split.BoundaryUpdates; // the interior followed as a drag step
-      EXPECT_EQ(filter->GetNumberOfVolumeIterations(), filter->GetDragVolumeIterations());
+      ++split.BoundaryUpdates; // the interior followed as a drag step: by its graph, or iterations
+      EXPECT_EQ(filter->GetNumberOfVolumeIterations(),
+        filter->GetNumberOfGraphNodes() > 0 ? 0 : filter->GetDragVolumeIterations());
     }
     else
     {

@@ -16,6 +16,7 @@
 #ifndef LaplacianEditing_Pipeline_VolumeFollower_h
 #define LaplacianEditing_Pipeline_VolumeFollower_h
 
+#include "DeformationGraph.h"
 #include "DisplacementArray.h"
 #include "EditTypes.h"
 #include "InjectiveDeformation.h"
@@ -49,6 +50,9 @@ public:
     int Iterations = 300;
     int DragIterations = 1;
     bool Dragging = false;
+    /// Drag steps follow the zone's deformation graph where no cell inverts by it (else they
+    /// run DragIterations of the injective solve).
+    bool Graph = true;
     SolverBackend Backend = SolverBackend::Cholmod;
     /// A settle's progress after each iteration (share of Iterations); returning false stops it
     /// there, every cell still positive (InjectiveOptions::Progress). Unused by drag steps.
@@ -76,6 +80,12 @@ public:
     bool Stopped = false;
     bool OutOfTime = false;
     double LargestMiss = 0.0;
+    /// Whether a drag step followed the zone's deformation graph (no cell flattened by it),
+    /// rather than an iteration of the injective solve; the graph's nodes.
+    bool ByGraph = false;
+    int GraphNodes = 0;
+    /// Cells the graph inverted that the step repaired (an injective solve around them).
+    int RepairedCells = 0;
     double SetupTime = 0.0;
     double SolveTime = 0.0;
   };
@@ -122,6 +132,21 @@ private:
   // The grid's frame positions of the zone's rows after a solve (Placed), and any point's.
   void Place();
   Vector3 Position(vtkIdType id) const;
+  // The zone's deformation graph, its shape at rest, and the zone rows' tetrahedra.
+  std::string BuildGraph();
+  // A drag step by the graph (Facts::ByGraph), where it and its repairs invert no cell.
+  void FollowGraph(const Positions& targets);
+  // Moves the free points around the tetrahedra `inverted` in `followed` (the graph's shape)
+  // so that none is, from the last step's shape; false where it cannot.
+  bool Repair(std::vector<int> inverted, Positions& followed);
+  // One patch of Repair, by at most `iterations`, written into `followed`; false where the
+  // patch's solve failed.
+  bool RepairPatch(const std::vector<int>& inverted, Positions& followed, int iterations);
+  // The distance of each zone row from its target after the last Follow (0 off targets).
+  const std::vector<double>& Misses() const
+  {
+    return this->LastFacts.ByGraph ? this->GraphMisses : this->Solver.GetMisses();
+  }
 
   vtkAlgorithm* Filter = nullptr;
   VolumeMesh Mesh;
@@ -132,6 +157,11 @@ private:
   vtkSmartPointer<vtkFloatArray> RestQuality;
   VolumeMesh::Zone Zone;
   InjectiveDeformation Solver;
+  DeformationGraph Graph;  // the zone's, built at its second drag step
+  Positions ZoneRest;      // zone rows at rest, relative to Center
+  Positions GraphShape;    // the graph's last shape, zone rows
+  std::vector<double> GraphMisses; // of the last step by the graph
+  std::vector<int> PointTetOffsets, PointTets; // per zone row, its tetrahedra (with the graph)
   Positions Solution; // zone rows, relative to Center
   Positions Edited;   // the targeted rows' edited positions, in the grid's frame
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Placed; // zone rows, grid's frame
