@@ -277,9 +277,6 @@ std::string VolumeFollower::Follow(const std::vector<vtkIdType>& moved, vtkPoint
   {
     options.Progress = settings.Progress;
   }
-  // A drag step after the region's first follows the zone's deformation graph, at the cost of
-  // its nodes, wherever that flattens no cell; elsewhere it is an iteration of the injective
-  // solve, from the last step's shape.
   // A drag step moves the zone's deformation graph to its targets and takes the graph's motion
   // since the last update onto the last update's shape (what earlier steps repaired stays so),
   // at the cost of the graph's nodes; it repairs the cells that this inverts. Where it cannot,
